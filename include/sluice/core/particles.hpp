@@ -1,0 +1,82 @@
+#pragma once
+// Particle state as a structure of arrays. Arrays are kept sorted by (cell key, id) so that the
+// particles of one cell are contiguous and every neighbour sum runs in a fixed order.
+#include "sluice/core/types.hpp"
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace sluice {
+
+template <int D>
+struct Particles {
+    // State at the start of a step (read by every stage of the step).
+    std::vector<ParticleId> id;
+    std::vector<Kind> kind;
+    std::vector<Vec<D>> x;   // position [m]
+    std::vector<Vec<D>> v;   // velocity [m/s]
+    std::vector<Real> rho;   // density [kg/m^3]
+    std::vector<Real> mass;  // [kg], constant in time
+
+    // Derived within a step.
+    std::vector<Real> p;       // pressure [Pa]
+    std::vector<Vec<D>> a;     // acceleration [m/s^2]
+    std::vector<Real> drho;    // density rate [kg/m^3/s] (continuity scheme)
+    std::vector<Vec<D>> grad_rho; // renormalised density gradient (delta-SPH)
+
+    // Double buffer written by integration; swapped in at the end of the step so that no
+    // stage ever reads a neighbour's half-written state.
+    std::vector<Vec<D>> x_next, v_next;
+    std::vector<Real> rho_next;
+
+    [[nodiscard]] std::size_t size() const { return id.size(); }
+
+    void resize(std::size_t n) {
+        id.resize(n);
+        kind.resize(n, Kind::fluid);
+        x.resize(n, Vec<D>::Zero());
+        v.resize(n, Vec<D>::Zero());
+        rho.resize(n, 0);
+        mass.resize(n, 0);
+        p.resize(n, 0);
+        a.resize(n, Vec<D>::Zero());
+        drho.resize(n, 0);
+        grad_rho.resize(n, Vec<D>::Zero());
+        x_next.resize(n, Vec<D>::Zero());
+        v_next.resize(n, Vec<D>::Zero());
+        rho_next.resize(n, 0);
+    }
+
+    // Appends one particle with the given state; derived fields start at zero.
+    void push_back(ParticleId pid, Kind k, const Vec<D>& pos, const Vec<D>& vel, Real density,
+                   Real m) {
+        resize(size() + 1);
+        const std::size_t i = size() - 1;
+        id[i] = pid;
+        kind[i] = k;
+        x[i] = pos;
+        v[i] = vel;
+        rho[i] = density;
+        mass[i] = m;
+    }
+
+    // Reorders the state arrays so that new position i holds old particle perm[i].
+    // Derived fields are not carried: they are recomputed every step.
+    void permute(std::span<const std::size_t> perm);
+
+    // Makes the double buffer the current state.
+    void swap_buffers() {
+        x.swap(x_next);
+        v.swap(v_next);
+        rho.swap(rho_next);
+    }
+
+    [[nodiscard]] std::size_t count(Kind k) const;
+    [[nodiscard]] Real total_mass() const;
+};
+
+extern template struct Particles<2>;
+extern template struct Particles<3>;
+
+} // namespace sluice

@@ -1,0 +1,145 @@
+#pragma once
+// Smoothing kernels W(r, h) and their radial derivative dW/dr, for D = 1, 2, 3.
+// Each kernel is a small value type; `support()` is the radius where W vanishes.
+// Normalisations are checked numerically in tests/unit/test_kernels.cpp (integral = 1,
+// gradient against finite differences).
+#include "sluice/core/types.hpp"
+#include "sluice/io/case_config.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <variant>
+
+namespace sluice {
+
+// Morris (1996) quintic spline, support 3h (seed 000, eq. 4):
+//   W = s [(3-q)^5 - 6(2-q)^5 + 15(1-q)^5], terms dropped where their base is negative.
+// s = 1/(120h) in 1-D (the seed prints 120/h), 7/(478 pi h^2) in 2-D, 3/(359 pi h^3) in 3-D.
+template <int D>
+struct QuinticKernel {
+    Real h, inv_h, sigma;
+    explicit QuinticKernel(Real h_) : h(h_), inv_h(1 / h_), sigma(norm(h_)) {}
+    static Real norm(Real h_) {
+        if constexpr (D == 1)
+            return 1 / (120 * h_);
+        else if constexpr (D == 2)
+            return 7 / (478 * std::numbers::pi * h_ * h_);
+        else
+            return 3 / (359 * std::numbers::pi * h_ * h_ * h_);
+    }
+    [[nodiscard]] Real support() const { return 3 * h; }
+    [[nodiscard]] Real W(Real r) const {
+        const Real q = r * inv_h;
+        Real w = 0;
+        if (q < 3) w += p5(3 - q);
+        if (q < 2) w -= 6 * p5(2 - q);
+        if (q < 1) w += 15 * p5(1 - q);
+        return sigma * w;
+    }
+    [[nodiscard]] Real dW(Real r) const {
+        const Real q = r * inv_h;
+        Real w = 0;
+        if (q < 3) w -= 5 * p4(3 - q);
+        if (q < 2) w += 30 * p4(2 - q);
+        if (q < 1) w -= 75 * p4(1 - q);
+        return sigma * inv_h * w;
+    }
+
+private:
+    static Real p4(Real t) { return (t * t) * (t * t); }
+    static Real p5(Real t) { return p4(t) * t; }
+};
+
+// Wendland C2, support 2h: W = s (1 - q/2)^4 (2q + 1)  (2-D, 3-D); 1-D uses the C2 form
+// s (1 - q/2)^3 (1.5q + 1).  s = 3/(4h), 7/(4 pi h^2), 21/(16 pi h^3).
+template <int D>
+struct WendlandC2Kernel {
+    Real h, inv_h, sigma;
+    explicit WendlandC2Kernel(Real h_) : h(h_), inv_h(1 / h_), sigma(norm(h_)) {}
+    static Real norm(Real h_) {
+        if constexpr (D == 1)
+            return 3 / (4 * h_);
+        else if constexpr (D == 2)
+            return 7 / (4 * std::numbers::pi * h_ * h_);
+        else
+            return 21 / (16 * std::numbers::pi * h_ * h_ * h_);
+    }
+    [[nodiscard]] Real support() const { return 2 * h; }
+    [[nodiscard]] Real W(Real r) const {
+        const Real q = r * inv_h;
+        if (q >= 2) return 0;
+        const Real t = 1 - q / 2;
+        if constexpr (D == 1)
+            return sigma * t * t * t * (1.5 * q + 1);
+        else
+            return sigma * (t * t) * (t * t) * (2 * q + 1);
+    }
+    [[nodiscard]] Real dW(Real r) const {
+        const Real q = r * inv_h;
+        if (q >= 2) return 0;
+        const Real t = 1 - q / 2;
+        if constexpr (D == 1)
+            return sigma * inv_h * (-3 * q) * t * t; // d/dq[(1-q/2)^3(1.5q+1)] = -3q(1-q/2)^2
+        else
+            return sigma * inv_h * (-5 * q) * t * t * t;
+    }
+};
+
+// Monaghan & Lattanzio (1985) cubic B-spline, support 2h:
+//   W = s (1 - 1.5q^2 + 0.75q^3) for q < 1, s 0.25 (2 - q)^3 for 1 <= q < 2.
+// s = 2/(3h), 10/(7 pi h^2), 1/(pi h^3).
+template <int D>
+struct CubicSplineKernel {
+    Real h, inv_h, sigma;
+    explicit CubicSplineKernel(Real h_) : h(h_), inv_h(1 / h_), sigma(norm(h_)) {}
+    static Real norm(Real h_) {
+        if constexpr (D == 1)
+            return 2 / (3 * h_);
+        else if constexpr (D == 2)
+            return 10 / (7 * std::numbers::pi * h_ * h_);
+        else
+            return 1 / (std::numbers::pi * h_ * h_ * h_);
+    }
+    [[nodiscard]] Real support() const { return 2 * h; }
+    [[nodiscard]] Real W(Real r) const {
+        const Real q = r * inv_h;
+        if (q >= 2) return 0;
+        if (q < 1) return sigma * (1 - 1.5 * q * q + 0.75 * q * q * q);
+        const Real t = 2 - q;
+        return sigma * 0.25 * t * t * t;
+    }
+    [[nodiscard]] Real dW(Real r) const {
+        const Real q = r * inv_h;
+        if (q >= 2) return 0;
+        if (q < 1) return sigma * inv_h * (-3 * q + 2.25 * q * q);
+        const Real t = 2 - q;
+        return sigma * inv_h * (-0.75 * t * t);
+    }
+};
+
+template <int D>
+using AnyKernel = std::variant<QuinticKernel<D>, WendlandC2Kernel<D>, CubicSplineKernel<D>>;
+
+template <int D>
+AnyKernel<D> make_kernel(KernelType type, Real h) {
+    switch (type) {
+    case KernelType::quintic: return QuinticKernel<D>(h);
+    case KernelType::wendland_c2: return WendlandC2Kernel<D>(h);
+    case KernelType::cubic_spline: return CubicSplineKernel<D>(h);
+    }
+    return QuinticKernel<D>(h);
+}
+
+// Support radius as a multiple of h.
+inline double kernel_support_factor(KernelType type) {
+    return type == KernelType::quintic ? 3.0 : 2.0;
+}
+
+// Gradient of W with respect to x_i for the pair displacement dx = x_i - x_j at distance r.
+template <int D, class K>
+inline Vec<D> grad_W(const K& kernel, const Vec<D>& dx, Real r) {
+    if (r <= 0) return Vec<D>::Zero();
+    return (kernel.dW(r) / r) * dx;
+}
+
+} // namespace sluice

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages sluice needs (as root, no prompts) and configures + builds
+# the given CMake preset (default: release). Idempotent: packages already present are skipped
+# and an existing build directory is reused.
+set -euo pipefail
+preset="${1:-release}"
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+
+packages=(build-essential cmake ninja-build pkg-config git
+          libopenmpi-dev openmpi-bin libtbb-dev libeigen3-dev
+          libhdf5-openmpi-dev hdf5-tools doctest-dev libtomlplusplus-dev libcli11-dev
+          libspdlog-dev libfmt-dev python3 python3-numpy python3-matplotlib python3-h5py)
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+    echo "setup: installing ${missing[*]}"
+    sudo_cmd=()
+    [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+    export DEBIAN_FRONTEND=noninteractive
+    "${sudo_cmd[@]}" apt-get update -qq
+    "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cd "$here"
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset" -j "$(nproc)"

@@ -1,0 +1,49 @@
+#include "sluice/core/particles.hpp"
+
+#include <algorithm>
+
+namespace sluice {
+
+namespace {
+template <class T>
+void apply_permutation(std::vector<T>& data, std::span<const std::size_t> perm) {
+    std::vector<T> out(perm.size());
+    for (std::size_t i = 0; i < perm.size(); ++i)
+        out[i] = data[perm[i]];
+    data.swap(out);
+}
+} // namespace
+
+template <int D>
+void Particles<D>::permute(std::span<const std::size_t> perm) {
+    apply_permutation(id, perm);
+    apply_permutation(kind, perm);
+    apply_permutation(x, perm);
+    apply_permutation(v, perm);
+    apply_permutation(rho, perm);
+    apply_permutation(mass, perm);
+    // Pressure and acceleration of the last step are kept with their particle: probes and
+    // snapshots written after a rebin still see consistent fields.
+    apply_permutation(p, perm);
+    apply_permutation(a, perm);
+}
+
+template <int D>
+std::size_t Particles<D>::count(Kind k) const {
+    return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), k));
+}
+
+template <int D>
+Real Particles<D>::total_mass() const {
+    // Fixed order of summation: the arrays are in (cell, id) order.
+    Real s = 0;
+    for (std::size_t i = 0; i < size(); ++i)
+        if (kind[i] == Kind::fluid)
+            s += mass[i];
+    return s;
+}
+
+template struct Particles<2>;
+template struct Particles<3>;
+
+} // namespace sluice
