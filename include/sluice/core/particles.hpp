@@ -24,6 +24,11 @@ struct Particles {
     std::vector<Vec<D>> a;     // acceleration [m/s^2]
     std::vector<Real> drho;    // density rate [kg/m^3/s] (continuity scheme)
     std::vector<Vec<D>> grad_rho; // renormalised density gradient (delta-SPH)
+    std::vector<Vec<D>> v_bc;  // wall particles: velocity seen by the viscous term (Adami)
+
+    // Leap-frog half-step velocity v^{n-1/2}; read and written only by the particle's own
+    // integration task, so it needs no second buffer.
+    std::vector<Vec<D>> v_half;
 
     // Double buffer written by integration; swapped in at the end of the step so that no
     // stage ever reads a neighbour's half-written state.
@@ -43,6 +48,8 @@ struct Particles {
         a.resize(n, Vec<D>::Zero());
         drho.resize(n, 0);
         grad_rho.resize(n, Vec<D>::Zero());
+        v_bc.resize(n, Vec<D>::Zero());
+        v_half.resize(n, Vec<D>::Zero());
         x_next.resize(n, Vec<D>::Zero());
         v_next.resize(n, Vec<D>::Zero());
         rho_next.resize(n, 0);
@@ -59,6 +66,7 @@ struct Particles {
         v[i] = vel;
         rho[i] = density;
         mass[i] = m;
+        v_half[i] = vel;
     }
 
     // Reorders the state arrays so that new position i holds old particle perm[i].

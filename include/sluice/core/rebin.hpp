@@ -1,0 +1,29 @@
+#pragma once
+// Keeps the particle arrays sorted by (Morton key of their cell, id): the particles of a cell
+// are then contiguous, cells follow the space-filling curve, and the order inside a cell is
+// a property of the particles, not of the history of the run.
+#include "sluice/core/cell_grid.hpp"
+#include "sluice/core/particles.hpp"
+
+#include <vector>
+
+namespace sluice {
+
+struct CellOccupancy {
+    CellIndex cell;
+    MortonKey key;
+    std::uint32_t count;
+};
+
+// Sorts P (if needed), fills `ranges` for every cell of the grid, and lists the occupied
+// cells in Morton order. Returns true when the order changed.
+template <int D>
+bool rebin(const CellGrid<D>& grid, Particles<D>& P, CellRanges& ranges,
+           std::vector<CellOccupancy>& occupied);
+
+extern template bool rebin<2>(const CellGrid<2>&, Particles<2>&, CellRanges&,
+                              std::vector<CellOccupancy>&);
+extern template bool rebin<3>(const CellGrid<3>&, Particles<3>&, CellRanges&,
+                              std::vector<CellOccupancy>&);
+
+} // namespace sluice

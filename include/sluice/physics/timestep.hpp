@@ -1,0 +1,41 @@
+#pragma once
+// Stable time step of explicit WCSPH (Monaghan 1992; Morris et al. 1997):
+//   acoustic  dt <= C_cfl h / (c + |v|)
+//   viscous   dt <= C_visc h^2 / nu
+//   force     dt <= C_force sqrt(h / |a|)
+#include "sluice/core/types.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sluice {
+
+struct TimeStepLimits {
+    Real acoustic = std::numeric_limits<Real>::infinity();
+    Real viscous = std::numeric_limits<Real>::infinity();
+    Real force = std::numeric_limits<Real>::infinity();
+    [[nodiscard]] Real min() const { return std::min({acoustic, viscous, force}); }
+};
+
+struct TimeStepParams {
+    Real h = 0, nu = 0; // smoothing length, kinematic viscosity
+    Real cfl = 0.25, viscous_cfl = 0.125, force_cfl = 0.25;
+};
+
+// Limits for one particle with sound speed c, speed |v| and acceleration |a|.
+inline TimeStepLimits particle_time_step(const TimeStepParams& prm, Real c, Real speed,
+                                         Real accel) {
+    TimeStepLimits l;
+    l.acoustic = prm.cfl * prm.h / (c + speed);
+    if (prm.nu > 0) l.viscous = prm.viscous_cfl * prm.h * prm.h / prm.nu;
+    if (accel > 0) l.force = prm.force_cfl * std::sqrt(prm.h / accel);
+    return l;
+}
+
+inline TimeStepLimits min(const TimeStepLimits& a, const TimeStepLimits& b) {
+    return {std::min(a.acoustic, b.acoustic), std::min(a.viscous, b.viscous),
+            std::min(a.force, b.force)};
+}
+
+} // namespace sluice

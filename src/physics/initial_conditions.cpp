@@ -1,0 +1,130 @@
+#include "sluice/physics/initial_conditions.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace sluice {
+
+namespace {
+
+// Lattice points of spacing dx centred in [lo, hi): lo + (k + 1/2) dx.
+int lattice_count(double lo, double hi, double dx) {
+    return std::max(0, static_cast<int>(std::round((hi - lo) / dx)));
+}
+
+template <int D, class F>
+void for_each_lattice_point(const std::array<double, D>& lo, const std::array<int, D>& n,
+                            double dx, F&& f) {
+    std::array<int, D> k{};
+    std::size_t total = 1;
+    for (int d = 0; d < D; ++d)
+        total *= static_cast<std::size_t>(n[d]);
+    for (std::size_t idx = 0; idx < total; ++idx) {
+        std::size_t r = idx;
+        Vec<D> x;
+        for (int d = 0; d < D; ++d) {
+            k[d] = static_cast<int>(r % static_cast<std::size_t>(n[d]));
+            r /= static_cast<std::size_t>(n[d]);
+            x[d] = lo[d] + (k[d] + 0.5) * dx;
+        }
+        f(x);
+    }
+}
+
+bool face_walled(const CaseConfig& cfg, int axis, bool upper) {
+    static constexpr const char* names[3][2] = {{"x-", "x+"}, {"y-", "y+"}, {"z-", "z+"}};
+    const std::string want = names[axis][upper ? 1 : 0];
+    return std::find(cfg.tank_faces.begin(), cfg.tank_faces.end(), want) != cfg.tank_faces.end();
+}
+
+} // namespace
+
+template <int D>
+void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
+    const double dx = cfg.dx;
+    const double volume = std::pow(dx, D);
+    Vec<D> g;
+    for (int d = 0; d < D; ++d)
+        g[d] = cfg.gravity[d];
+    const int up = vertical_axis<D>();
+    for (const FluidBlock& b : cfg.blocks) {
+        std::array<double, D> lo{};
+        std::array<int, D> n{};
+        for (int d = 0; d < D; ++d) {
+            lo[d] = b.lo[d];
+            n[d] = lattice_count(b.lo[d], b.hi[d], dx);
+        }
+        const double top = b.hi[up];
+        for_each_lattice_point<D>(lo, n, dx, [&](const Vec<D>& x) {
+            Vec<D> v;
+            for (int d = 0; d < D; ++d)
+                v[d] = b.velocity[d];
+            double p = eos.p_background;
+            if (b.hydrostatic) p += cfg.rho0 * std::abs(g[up]) * (top - x[up]);
+            if (b.profile == VelocityProfile::taylor_green) {
+                // u = -A cos(kx) sin(ky), v = A sin(kx) cos(ky), p = -rho A^2/4 (cos 2kx + cos 2ky)
+                // on the block's own period L (Taylor & Green 1937), x measured from lo.
+                const double k = 2 * std::numbers::pi / (b.hi[0] - b.lo[0]);
+                const double X = k * (x[0] - b.lo[0]), Y = k * (x[1] - b.lo[1]);
+                v[0] += -b.amplitude * std::cos(X) * std::sin(Y);
+                v[1] += b.amplitude * std::sin(X) * std::cos(Y);
+                p += -cfg.rho0 * b.amplitude * b.amplitude / 4 * (std::cos(2 * X) + std::cos(2 * Y));
+            }
+            const double rho = eos.density(p);
+            P.push_back(static_cast<ParticleId>(P.size()), Kind::fluid, x, v, rho, rho * volume);
+        });
+    }
+}
+
+template <int D>
+void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
+    const double dx = cfg.dx;
+    std::array<double, D> lo{}, hi{};
+    std::array<int, D> n{};
+    for (int d = 0; d < D; ++d) {
+        lo[d] = cfg.tank_lo[d] - (face_walled(cfg, d, false) ? layers * dx : 0.0);
+        hi[d] = cfg.tank_hi[d] + (face_walled(cfg, d, true) ? layers * dx : 0.0);
+        n[d] = lattice_count(lo[d], hi[d], dx);
+    }
+    const double mass = cfg.rho0 * std::pow(dx, D);
+    for_each_lattice_point<D>(lo, n, dx, [&](const Vec<D>& x) {
+        bool inside_tank = true;
+        for (int d = 0; d < D; ++d)
+            inside_tank = inside_tank && x[d] > cfg.tank_lo[d] && x[d] < cfg.tank_hi[d];
+        if (inside_tank) return;
+        P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(), cfg.rho0,
+                    mass);
+    });
+}
+
+std::size_t count_fluid_particles(const CaseConfig& cfg) {
+    std::size_t total = 0;
+    for (const FluidBlock& b : cfg.blocks) {
+        std::size_t n = 1;
+        for (int d = 0; d < cfg.dimension; ++d)
+            n *= static_cast<std::size_t>(lattice_count(b.lo[d], b.hi[d], cfg.dx));
+        total += n;
+    }
+    return total;
+}
+
+std::size_t count_wall_particles(const CaseConfig& cfg, int layers) {
+    if (cfg.walls != WallModel::dummy) return 0;
+    std::size_t outer = 1, inner = 1;
+    for (int d = 0; d < cfg.dimension; ++d) {
+        const double lo = cfg.tank_lo[d] - (face_walled(cfg, d, false) ? layers * cfg.dx : 0.0);
+        const double hi = cfg.tank_hi[d] + (face_walled(cfg, d, true) ? layers * cfg.dx : 0.0);
+        outer *= static_cast<std::size_t>(lattice_count(lo, hi, cfg.dx));
+        inner *= static_cast<std::size_t>(lattice_count(cfg.tank_lo[d], cfg.tank_hi[d], cfg.dx));
+    }
+    return outer - inner;
+}
+
+template void add_fluid_blocks<2>(const CaseConfig&, const Eos&, Particles<2>&);
+template void add_fluid_blocks<3>(const CaseConfig&, const Eos&, Particles<3>&);
+template void add_wall_particles<2>(const CaseConfig&, int, Particles<2>&);
+template void add_wall_particles<3>(const CaseConfig&, int, Particles<3>&);
+
+} // namespace sluice

@@ -1,0 +1,304 @@
+#include "sluice/solver/simulation.hpp"
+
+#include "sluice/io/errors.hpp"
+#include "sluice/physics/density.hpp"
+#include "sluice/physics/initial_conditions.hpp"
+#include "sluice/physics/integrator.hpp"
+
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace sluice {
+
+namespace {
+
+template <int D>
+Vec<D> to_vec(const Triple& t) {
+    Vec<D> v;
+    for (int d = 0; d < D; ++d)
+        v[d] = t[d];
+    return v;
+}
+
+template <int D>
+std::vector<Plane<D>> reflective_planes(const CaseConfig& cfg) {
+    std::vector<Plane<D>> planes;
+    if (cfg.walls == WallModel::reflective) {
+        static constexpr const char* names[3][2] = {{"x-", "x+"}, {"y-", "y+"}, {"z-", "z+"}};
+        for (int d = 0; d < D; ++d)
+            for (int side = 0; side < 2; ++side) {
+                const std::string face = names[d][side];
+                if (std::find(cfg.tank_faces.begin(), cfg.tank_faces.end(), face) ==
+                    cfg.tank_faces.end())
+                    continue;
+                Plane<D> pl;
+                pl.point[d] = side == 0 ? cfg.tank_lo[d] : cfg.tank_hi[d];
+                pl.normal[d] = side == 0 ? 1.0 : -1.0;
+                planes.push_back(pl);
+            }
+    }
+    for (const WallPlane& wp : cfg.planes) {
+        Plane<D> pl{to_vec<D>(wp.point), to_vec<D>(wp.normal)};
+        pl.normal.normalize();
+        planes.push_back(pl);
+    }
+    return planes;
+}
+
+} // namespace
+
+template <int D>
+Simulation<D>::Simulation(const CaseConfig& cfg)
+    : cfg_(cfg), kernel_(make_kernel<D>(cfg.kernel, cfg.h_over_dx * cfg.dx)) {
+    h_ = cfg.h_over_dx * cfg.dx;
+    const double support = kernel_support_factor(cfg.kernel) * h_;
+    eos_ = Eos{cfg.eos, cfg.rho0, cfg.sound_speed, cfg.gamma, cfg.background_pressure};
+
+    momentum_.gravity = to_vec<D>(cfg.gravity);
+    momentum_.mu = cfg.viscosity;
+    momentum_.alpha = cfg.artificial_viscosity;
+    momentum_.c0 = cfg.sound_speed;
+    momentum_.h = h_;
+    momentum_.continuity = cfg.density == DensityScheme::continuity;
+    momentum_.delta = momentum_.continuity ? cfg.delta_sph : 0.0;
+    momentum_.wall_viscous = cfg.no_slip;
+
+    ts_params_ = TimeStepParams{h_, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl,
+                                cfg.force_cfl};
+    planes_ = reflective_planes<D>(cfg);
+
+    add_fluid_blocks<D>(cfg, eos_, P_);
+    const int layers = wall_layers(support, cfg.dx);
+    if (cfg.walls == WallModel::dummy) add_wall_particles<D>(cfg, layers, P_);
+    for (std::size_t i = 0; i < P_.size(); ++i)
+        P_.p[i] = eos_.pressure(P_.rho[i]);
+
+    // The grid covers the domain; open axes get room for wall layers and one support more.
+    domain_lo_ = to_vec<D>(cfg.domain_lo);
+    domain_hi_ = to_vec<D>(cfg.domain_hi);
+    Vec<D> lo = domain_lo_, hi = domain_hi_;
+    std::array<bool, D> periodic{};
+    for (int d = 0; d < D; ++d) {
+        periodic[d] = cfg.periodic[d];
+        if (periodic[d]) continue;
+        double wall = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
+        lo[d] = std::min(lo[d], cfg.tank_lo[d] - wall) - support;
+        hi[d] = std::max(hi[d], cfg.tank_hi[d] + wall) + support;
+    }
+    try {
+        grid_ = CellGrid<D>::make(lo, hi, support, periodic);
+    } catch (const std::invalid_argument& e) {
+        throw CaseError(cfg.source_file, "domain.periodic", e.what());
+    }
+
+    const TimeStepLimits rest = limits_at_rest();
+    if (cfg.fixed_dt) {
+        if (*cfg.fixed_dt > rest.min())
+            throw CaseError(cfg.source_file, "numerics.dt",
+                            fmt::format("fixed time step {:.4g} s exceeds the stability limit "
+                                        "{:.4g} s (acoustic {:.4g} s, viscous {:.4g} s, force "
+                                        "{:.4g} s); remove numerics.dt to let the solver choose",
+                                        *cfg.fixed_dt, rest.min(), rest.acoustic, rest.viscous,
+                                        rest.force));
+        dt_ = *cfg.fixed_dt;
+    } else {
+        dt_ = rest.min();
+    }
+    limits_ = rest;
+
+    const std::size_t n = P_.size();
+    const auto per_group = static_cast<std::size_t>(std::max(1, cfg.particles_per_group));
+    const int by_size = static_cast<int>((n + per_group - 1) / per_group);
+    // Groups are independent of the thread count for results; more groups than threads let
+    // TBB balance inside a rank.
+    target_groups_ = std::max(by_size, 4 * tbb::this_task_arena::max_concurrency());
+    rebin_and_decompose();
+}
+
+template <int D>
+TimeStepLimits Simulation<D>::limits_at_rest() const {
+    Real g = 0;
+    for (int d = 0; d < D; ++d)
+        g += cfg_.gravity[d] * cfg_.gravity[d];
+    Real vmax = 0;
+    for (std::size_t i = 0; i < P_.size(); ++i)
+        vmax = std::max(vmax, P_.v[i].norm());
+    return particle_time_step(ts_params_, cfg_.sound_speed, vmax, std::sqrt(g));
+}
+
+template <int D>
+void Simulation<D>::rebin_and_decompose() {
+    const bool moved = rebin(grid_, P_, ranges_, occupied_);
+    (void)moved;
+    std::vector<tasks::OccupiedCell> occ;
+    occ.reserve(occupied_.size());
+    for (const auto& c : occupied_)
+        occ.push_back({c.key, c.cell, static_cast<double>(c.count)});
+
+    // A particle can enter a new cell without changing the sort order, so the occupied set
+    // and the group adjacency are checked every step.
+    bool regroup = !graph_;
+    if (graph_) {
+        tasks::assign_cells(occ, topo_);
+        const auto needed = tasks::group_adjacency(grid_, occ, topo_);
+        regroup = !tasks::adjacency_covers(graph_->neighbours(), needed);
+        if (!regroup) {
+            // Re-cut when a group has drifted far above its share of particles.
+            const double mean = static_cast<double>(P_.size()) / topo_.group_count();
+            double worst = 0;
+            for (const auto& cells : topo_.cells) {
+                double c = 0;
+                for (CellIndex cell : cells)
+                    c += ranges_.end[cell] - ranges_.begin[cell];
+                worst = std::max(worst, c);
+            }
+            regroup = worst > 2 * mean;
+        }
+    }
+    if (regroup) {
+        const int groups = std::min<int>(target_groups_, static_cast<int>(occ.size()));
+        topo_.key_begin = tasks::cut_by_cost(occ, std::max(1, groups));
+        tasks::assign_cells(occ, topo_);
+        topo_.neighbours = tasks::group_adjacency(grid_, occ, topo_);
+        build_graph();
+        ++decompositions_;
+    }
+}
+
+template <int D>
+void Simulation<D>::build_graph() {
+    using tasks::Reach;
+    std::vector<tasks::StageSpec> specs;
+    stage_kinds_.clear();
+    specs.push_back({"density", Reach::neighbourhood});
+    stage_kinds_.push_back(StageKind::density);
+    if (cfg_.walls == WallModel::dummy) {
+        specs.push_back({"walls", Reach::neighbourhood});
+        stage_kinds_.push_back(StageKind::walls);
+    }
+    specs.push_back({"accel", Reach::neighbourhood});
+    stage_kinds_.push_back(StageKind::accel);
+    specs.push_back({"integrate", Reach::self});
+    stage_kinds_.push_back(StageKind::integrate);
+    group_limits_.assign(topo_.neighbours.size(), {});
+    group_failure_.assign(topo_.neighbours.size(), {});
+    graph_ = std::make_unique<tasks::StepGraph>(
+        specs, topo_.neighbours, [this](int stage, int group) { run_stage(stage, group); });
+}
+
+template <int D>
+void Simulation<D>::run_stage(int stage, int group) {
+    std::visit([&](const auto& k) { run_stage_with(k, stage, group); }, kernel_);
+}
+
+template <int D>
+template <class K>
+void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
+    const Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x),
+                              kernel.support()};
+    const auto& cells = topo_.cells[static_cast<std::size_t>(group)];
+    const StageKind kind = stage_kinds_[static_cast<std::size_t>(stage)];
+    if (density_only_ && kind != StageKind::density) return;
+    switch (kind) {
+    case StageKind::density:
+        for (CellIndex c : cells) {
+            if (cfg_.density == DensityScheme::summation) {
+                summation_density(nb, kernel, c, P_, std::span<Real>(P_.rho));
+            } else if (momentum_.delta > 0) {
+                renormalised_density_gradient(nb, kernel, c, P_, std::span<Vec<D>>(P_.grad_rho));
+            }
+            equation_of_state(nb, eos_, c, P_, std::span<Real>(P_.p));
+        }
+        break;
+    case StageKind::walls:
+        for (CellIndex c : cells)
+            dummy_wall_state(nb, kernel, eos_, momentum_.gravity, cfg_.no_slip, c, P_);
+        break;
+    case StageKind::accel:
+        for (CellIndex c : cells)
+            acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a),
+                         std::span<Real>(P_.drho));
+        break;
+    case StageKind::integrate: {
+        TimeStepLimits lim;
+        std::string failure;
+        const bool continuity = momentum_.continuity;
+        for (CellIndex c : cells)
+            for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+                if (P_.kind[i] != Kind::fluid) {
+                    P_.x_next[i] = P_.x[i];
+                    P_.v_next[i] = P_.v[i];
+                    P_.rho_next[i] = P_.rho[i];
+                    continue;
+                }
+                auto s = leapfrog<D>(P_.x[i], P_.v_half[i], P_.rho[i], P_.a[i],
+                                     continuity ? P_.drho[i] : Real(0), dt_prev_, dt_);
+                if (!planes_.empty()) reflect(planes_, cfg_.restitution, s.x, s.v_half, s.v);
+                grid_.wrap(s.x);
+                P_.x_next[i] = s.x;
+                P_.v_half[i] = s.v_half;
+                P_.v_next[i] = s.v;
+                P_.rho_next[i] = s.rho;
+                lim = min(lim, particle_time_step(ts_params_, eos_.sound_speed(s.rho),
+                                                  s.v.norm(), P_.a[i].norm()));
+                if (failure.empty()) {
+                    bool bad = !std::isfinite(s.rho) || s.rho <= 0 || !s.x.allFinite() ||
+                               !s.v.allFinite();
+                    const char* what = "a non-finite or non-positive state";
+                    for (int d = 0; d < D && !bad; ++d)
+                        if (!grid_.periodic[d] &&
+                            (s.x[d] < domain_lo_[d] || s.x[d] > domain_hi_[d])) {
+                            bad = true;
+                            what = "a position outside the domain";
+                        }
+                    if (bad)
+                        failure = fmt::format(
+                            "particle {} reached {} at step {}, t = {:.6g} s: x = [{}], v = [{}], "
+                            "rho = {:.6g}",
+                            P_.id[i], what, steps_ + 1, time_ + dt_,
+                            fmt::join(s.x.data(), s.x.data() + D, ", "),
+                            fmt::join(s.v.data(), s.v.data() + D, ", "), s.rho);
+                }
+            }
+        group_limits_[static_cast<std::size_t>(group)] = lim;
+        group_failure_[static_cast<std::size_t>(group)] = std::move(failure);
+        break;
+    }
+    }
+}
+
+template <int D>
+void Simulation<D>::step() {
+    graph_->run();
+    for (const std::string& f : group_failure_)
+        if (!f.empty()) throw RunError(f);
+    P_.swap_buffers();
+    TimeStepLimits lim;
+    for (const auto& l : group_limits_)
+        lim = min(lim, l);
+    limits_ = lim;
+    time_ += dt_;
+    ++steps_;
+    dt_prev_ = dt_;
+    if (!cfg_.fixed_dt) dt_ = lim.min();
+    const auto t0 = std::chrono::steady_clock::now();
+    rebin_and_decompose();
+    rebin_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+template <int D>
+void Simulation<D>::compute_density_only() {
+    density_only_ = true;
+    graph_->run();
+    density_only_ = false;
+}
+
+template class Simulation<2>;
+template class Simulation<3>;
+
+} // namespace sluice
