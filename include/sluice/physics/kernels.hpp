@@ -14,7 +14,9 @@ namespace sluice {
 
 // Morris (1996) quintic spline, support 3h (seed 000, eq. 4):
 //   W = s [(3-q)^5 - 6(2-q)^5 + 15(1-q)^5], terms dropped where their base is negative.
-// s = 1/(120h) in 1-D (the seed prints 120/h), 7/(478 pi h^2) in 2-D, 3/(359 pi h^3) in 3-D.
+// s = 1/(120h) in 1-D (the seed prints 120/h), 7/(478 pi h^2) in 2-D, 1/(120 pi h^3) in 3-D.
+// The seed (after Morris 1996) prints 3/(359 pi h^3) in 3-D, which integrates to 1.0028: the
+// exact value is 1/(120 pi h^3) (checked in tests/unit/test_kernels.cpp).
 template <int D>
 struct QuinticKernel {
     Real h, inv_h, sigma;
@@ -25,7 +27,7 @@ struct QuinticKernel {
         else if constexpr (D == 2)
             return 7 / (478 * std::numbers::pi * h_ * h_);
         else
-            return 3 / (359 * std::numbers::pi * h_ * h_ * h_);
+            return 1 / (120 * std::numbers::pi * h_ * h_ * h_);
     }
     [[nodiscard]] Real support() const { return 3 * h; }
     [[nodiscard]] Real W(Real r) const {
@@ -51,14 +53,14 @@ private:
 };
 
 // Wendland C2, support 2h: W = s (1 - q/2)^4 (2q + 1)  (2-D, 3-D); 1-D uses the C2 form
-// s (1 - q/2)^3 (1.5q + 1).  s = 3/(4h), 7/(4 pi h^2), 21/(16 pi h^3).
+// s (1 - q/2)^3 (1.5q + 1).  s = 5/(8h), 7/(4 pi h^2), 21/(16 pi h^3).
 template <int D>
 struct WendlandC2Kernel {
     Real h, inv_h, sigma;
     explicit WendlandC2Kernel(Real h_) : h(h_), inv_h(1 / h_), sigma(norm(h_)) {}
     static Real norm(Real h_) {
         if constexpr (D == 1)
-            return 3 / (4 * h_);
+            return 5 / (8 * h_);
         else if constexpr (D == 2)
             return 7 / (4 * std::numbers::pi * h_ * h_);
         else

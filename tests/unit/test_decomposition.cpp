@@ -1,0 +1,58 @@
+// Cell groups: cost-balanced cuts along the Morton curve and group adjacency (periodic wrap).
+#include "sluice/tasks/decomposition.hpp"
+
+#include <doctest/doctest.h>
+
+using namespace sluice;
+using namespace sluice::tasks;
+
+TEST_CASE("cut_by_cost gives groups of nearly equal cost") {
+    std::vector<OccupiedCell> occ;
+    for (std::uint32_t k = 0; k < 1000; ++k)
+        occ.push_back({MortonKey(3 * k), k, double(1 + k % 5)});
+    GroupTopology topo;
+    topo.key_begin = cut_by_cost(occ, 10);
+    REQUIRE(topo.group_count() == 10);
+    assign_cells(occ, topo);
+    double total = 0;
+    for (const auto& c : occ)
+        total += c.cost;
+    for (int g = 0; g < 10; ++g) {
+        double cost = 0;
+        for (CellIndex c : topo.cells[g])
+            cost += occ[c].cost;
+        CHECK(cost == doctest::Approx(total / 10).epsilon(0.02));
+    }
+    CHECK(topo.group_of(0) == 0);
+    CHECK(topo.group_of(topo.key_begin[3]) == 3);
+    CHECK(topo.group_of(topo.key_begin[3] - 1) == 2);
+}
+
+TEST_CASE("Group adjacency follows cell adjacency, including the periodic wrap") {
+    // A 6x1-cell strip, periodic in x: cells 0 and 5 touch through the boundary.
+    auto grid = CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(6, 1), 1.0, {true, false});
+    REQUIRE(grid.dims[0] == 6);
+    std::vector<OccupiedCell> occ;
+    for (int i = 0; i < 6; ++i)
+        occ.push_back({grid.morton({i, 0}), grid.linear({i, 0}), 1.0});
+    std::sort(occ.begin(), occ.end(), [](auto& a, auto& b) { return a.key < b.key; });
+    GroupTopology topo;
+    topo.key_begin = cut_by_cost(occ, 6);
+    assign_cells(occ, topo);
+    const auto adj = group_adjacency(grid, occ, topo);
+    auto group_of_x = [&](int x) { return topo.group_of(grid.morton({x, 0})); };
+    const int g0 = group_of_x(0), g5 = group_of_x(5), g2 = group_of_x(2);
+    CHECK(std::binary_search(adj[g0].begin(), adj[g0].end(), g5));
+    CHECK(adj[g2].size() == 2);
+    // Without the wrap, the ends do not touch.
+    auto open = CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(6, 1), 1.0, {false, false});
+    const auto adj_open = group_adjacency(open, occ, topo);
+    CHECK(!std::binary_search(adj_open[g0].begin(), adj_open[g0].end(), g5));
+    CHECK(adjacency_covers(adj, adj_open));
+    CHECK(!adjacency_covers(adj_open, adj));
+}
+
+TEST_CASE("A periodic axis needs at least three cells") {
+    CHECK_THROWS_AS(CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(2.5, 1), 1.0, {true, false}),
+                    std::invalid_argument);
+}
