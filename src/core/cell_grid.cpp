@@ -14,7 +14,8 @@ CellGrid<D> CellGrid<D>::make(const Vec<D>& lo, const Vec<D>& hi, Real min_edge,
     g.periodic = periodic;
     for (int d = 0; d < D; ++d) {
         int n = static_cast<int>(std::floor(g.length[d] / min_edge));
-        if (n < 1) n = 1;
+        if (n < 1)
+            n = 1;
         if (periodic[d] && n < 3)
             throw std::invalid_argument("periodic axis shorter than 3 kernel supports");
         g.dims[d] = n;
@@ -50,7 +51,8 @@ int adjacent_cells(const CellGrid<D>& grid, CellIndex c, NeighbourCell<D>* out) 
             }
             nc[d] = v;
         }
-        if (!inside) continue;
+        if (!inside)
+            continue;
         out[count++] = NeighbourCell<D>{grid.linear(nc), shift};
     }
     return count;

@@ -36,11 +36,17 @@ std::size_t Particles<D>::count(Kind k) const {
 
 template <int D>
 Real Particles<D>::total_mass() const {
-    // Fixed order of summation: the arrays are in (cell, id) order.
-    Real s = 0;
+    // Summed in id order, so the result does not depend on where particles are stored and
+    // the exact conservation of mass can be checked with ==.
+    std::vector<std::pair<ParticleId, Real>> m;
+    m.reserve(size());
     for (std::size_t i = 0; i < size(); ++i)
         if (kind[i] == Kind::fluid)
-            s += mass[i];
+            m.emplace_back(id[i], mass[i]);
+    std::sort(m.begin(), m.end());
+    Real s = 0;
+    for (const auto& [pid, mi] : m)
+        s += mi;
     return s;
 }
 

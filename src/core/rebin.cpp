@@ -50,9 +50,7 @@ bool rebin(const CellGrid<D>& grid, Particles<D>& P, CellRanges& ranges,
     return !sorted;
 }
 
-template bool rebin<2>(const CellGrid<2>&, Particles<2>&, CellRanges&,
-                       std::vector<CellOccupancy>&);
-template bool rebin<3>(const CellGrid<3>&, Particles<3>&, CellRanges&,
-                       std::vector<CellOccupancy>&);
+template bool rebin<2>(const CellGrid<2>&, Particles<2>&, CellRanges&, std::vector<CellOccupancy>&);
+template bool rebin<3>(const CellGrid<3>&, Particles<3>&, CellRanges&, std::vector<CellOccupancy>&);
 
 } // namespace sluice

@@ -15,8 +15,8 @@ int lattice_count(double lo, double hi, double dx) {
 }
 
 template <int D, class F>
-void for_each_lattice_point(const std::array<double, D>& lo, const std::array<int, D>& n,
-                            double dx, F&& f) {
+void for_each_lattice_point(const std::array<double, D>& lo, const std::array<int, D>& n, double dx,
+                            F&& f) {
     std::array<int, D> k{};
     std::size_t total = 1;
     for (int d = 0; d < D; ++d)
@@ -62,7 +62,8 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
             for (int d = 0; d < D; ++d)
                 v[d] = b.velocity[d];
             double p = eos.p_background;
-            if (b.hydrostatic) p += cfg.rho0 * std::abs(g[up]) * (top - x[up]);
+            if (b.hydrostatic)
+                p += cfg.rho0 * std::abs(g[up]) * (top - x[up]);
             if (b.profile == VelocityProfile::taylor_green) {
                 // u = -A cos(kx) sin(ky), v = A sin(kx) cos(ky), p = -rho A^2/4 (cos 2kx + cos 2ky)
                 // on the block's own period L (Taylor & Green 1937), x measured from lo.
@@ -70,7 +71,8 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
                 const double X = k * (x[0] - b.lo[0]), Y = k * (x[1] - b.lo[1]);
                 v[0] += -b.amplitude * std::cos(X) * std::sin(Y);
                 v[1] += b.amplitude * std::sin(X) * std::cos(Y);
-                p += -cfg.rho0 * b.amplitude * b.amplitude / 4 * (std::cos(2 * X) + std::cos(2 * Y));
+                p +=
+                    -cfg.rho0 * b.amplitude * b.amplitude / 4 * (std::cos(2 * X) + std::cos(2 * Y));
             }
             const double rho = eos.density(p);
             P.push_back(static_cast<ParticleId>(P.size()), Kind::fluid, x, v, rho, rho * volume);
@@ -93,7 +95,8 @@ void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
         bool inside_tank = true;
         for (int d = 0; d < D; ++d)
             inside_tank = inside_tank && x[d] > cfg.tank_lo[d] && x[d] < cfg.tank_hi[d];
-        if (inside_tank) return;
+        if (inside_tank)
+            return;
         P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(), cfg.rho0,
                     mass);
     });
@@ -111,7 +114,8 @@ std::size_t count_fluid_particles(const CaseConfig& cfg) {
 }
 
 std::size_t count_wall_particles(const CaseConfig& cfg, int layers) {
-    if (cfg.walls != WallModel::dummy) return 0;
+    if (cfg.walls != WallModel::dummy)
+        return 0;
     std::size_t outer = 1, inner = 1;
     for (int d = 0; d < cfg.dimension; ++d) {
         const double lo = cfg.tank_lo[d] - (face_walled(cfg, d, false) ? layers * cfg.dx : 0.0);

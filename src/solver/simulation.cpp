@@ -63,17 +63,22 @@ Simulation<D>::Simulation(const CaseConfig& cfg)
     momentum_.alpha = cfg.artificial_viscosity;
     momentum_.c0 = cfg.sound_speed;
     momentum_.h = h_;
-    momentum_.continuity = cfg.density == DensityScheme::continuity;
-    momentum_.delta = momentum_.continuity ? cfg.delta_sph : 0.0;
+    continuity_ = cfg.density == DensityScheme::continuity;
+    delta_h_c0_ = continuity_ ? cfg.delta_sph * h_ * cfg.sound_speed : 0.0;
     momentum_.wall_viscous = cfg.no_slip;
+    momentum_.p_floor = cfg.background_pressure;
 
-    ts_params_ = TimeStepParams{h_, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl,
-                                cfg.force_cfl};
+    ts_params_ =
+        TimeStepParams{h_, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl, cfg.force_cfl};
     planes_ = reflective_planes<D>(cfg);
 
     add_fluid_blocks<D>(cfg, eos_, P_);
     const int layers = wall_layers(support, cfg.dx);
-    if (cfg.walls == WallModel::dummy) add_wall_particles<D>(cfg, layers, P_);
+    if (cfg.walls == WallModel::dummy)
+        add_wall_particles<D>(cfg, layers, P_);
+    // A fluid particle may sit inside the dummy-wall layers for a moment; it has escaped only
+    // once it is behind all of them.
+    escape_margin_ = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
     for (std::size_t i = 0; i < P_.size(); ++i)
         P_.p[i] = eos_.pressure(P_.rho[i]);
 
@@ -84,7 +89,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg)
     std::array<bool, D> periodic{};
     for (int d = 0; d < D; ++d) {
         periodic[d] = cfg.periodic[d];
-        if (periodic[d]) continue;
+        if (periodic[d])
+            continue;
         double wall = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
         lo[d] = std::min(lo[d], cfg.tank_lo[d] - wall) - support;
         hi[d] = std::max(hi[d], cfg.tank_hi[d] + wall) + support;
@@ -182,8 +188,11 @@ void Simulation<D>::build_graph() {
     }
     specs.push_back({"accel", Reach::neighbourhood});
     stage_kinds_.push_back(StageKind::accel);
-    specs.push_back({"integrate", Reach::self});
-    stage_kinds_.push_back(StageKind::integrate);
+    specs.push_back({"kick", Reach::self});
+    stage_kinds_.push_back(StageKind::kick);
+    // The continuity rate reads the neighbours' kicked velocities; summation needs nothing.
+    specs.push_back({"drift", continuity_ ? Reach::neighbourhood : Reach::self});
+    stage_kinds_.push_back(StageKind::drift);
     group_limits_.assign(topo_.neighbours.size(), {});
     group_failure_.assign(topo_.neighbours.size(), {});
     graph_ = std::make_unique<tasks::StepGraph>(
@@ -198,17 +207,17 @@ void Simulation<D>::run_stage(int stage, int group) {
 template <int D>
 template <class K>
 void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
-    const Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x),
-                              kernel.support()};
+    const Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x), kernel.support()};
     const auto& cells = topo_.cells[static_cast<std::size_t>(group)];
     const StageKind kind = stage_kinds_[static_cast<std::size_t>(stage)];
-    if (density_only_ && kind != StageKind::density) return;
+    if (density_only_ && kind != StageKind::density)
+        return;
     switch (kind) {
     case StageKind::density:
         for (CellIndex c : cells) {
             if (cfg_.density == DensityScheme::summation) {
                 summation_density(nb, kernel, c, P_, std::span<Real>(P_.rho));
-            } else if (momentum_.delta > 0) {
+            } else if (delta_h_c0_ > 0) {
                 renormalised_density_gradient(nb, kernel, c, P_, std::span<Vec<D>>(P_.grad_rho));
             }
             equation_of_state(nb, eos_, c, P_, std::span<Real>(P_.p));
@@ -220,14 +229,22 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
         break;
     case StageKind::accel:
         for (CellIndex c : cells)
-            acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a),
-                         std::span<Real>(P_.drho));
+            acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a));
         break;
-    case StageKind::integrate: {
+    case StageKind::kick:
+        // v_half is read by other groups only in their drift, which waits for this kick.
+        for (CellIndex c : cells)
+            for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                if (P_.kind[i] == Kind::fluid)
+                    P_.v_half[i] = kick<D>(P_.v_half[i], P_.a[i], dt_prev_, dt_);
+        break;
+    case StageKind::drift: {
         TimeStepLimits lim;
         std::string failure;
-        const bool continuity = momentum_.continuity;
-        for (CellIndex c : cells)
+        for (CellIndex c : cells) {
+            if (continuity_)
+                continuity_rate(nb, kernel, delta_h_c0_, c, P_, std::span<const Vec<D>>(P_.v_half),
+                                std::span<Real>(P_.drho));
             for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
                 if (P_.kind[i] != Kind::fluid) {
                     P_.x_next[i] = P_.x[i];
@@ -235,23 +252,23 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                     P_.rho_next[i] = P_.rho[i];
                     continue;
                 }
-                auto s = leapfrog<D>(P_.x[i], P_.v_half[i], P_.rho[i], P_.a[i],
-                                     continuity ? P_.drho[i] : Real(0), dt_prev_, dt_);
-                if (!planes_.empty()) reflect(planes_, cfg_.restitution, s.x, s.v_half, s.v);
-                grid_.wrap(s.x);
-                P_.x_next[i] = s.x;
-                P_.v_half[i] = s.v_half;
-                P_.v_next[i] = s.v;
-                P_.rho_next[i] = s.rho;
-                lim = min(lim, particle_time_step(ts_params_, eos_.sound_speed(s.rho),
-                                                  s.v.norm(), P_.a[i].norm()));
+                Vec<D> x = drift<D>(P_.x[i], P_.v_half[i], dt_);
+                Vec<D> v = velocity_estimate<D>(P_.v_half[i], P_.a[i], dt_);
+                const Real rho = continuity_ ? P_.rho[i] + dt_ * P_.drho[i] : P_.rho[i];
+                if (!planes_.empty())
+                    reflect(planes_, cfg_.restitution, x, P_.v_half[i], v);
+                grid_.wrap(x);
+                P_.x_next[i] = x;
+                P_.v_next[i] = v;
+                P_.rho_next[i] = rho;
+                lim = min(lim, particle_time_step(ts_params_, eos_.sound_speed(rho), v.norm(),
+                                                  P_.a[i].norm()));
                 if (failure.empty()) {
-                    bool bad = !std::isfinite(s.rho) || s.rho <= 0 || !s.x.allFinite() ||
-                               !s.v.allFinite();
+                    bool bad = !std::isfinite(rho) || rho <= 0 || !x.allFinite() || !v.allFinite();
                     const char* what = "a non-finite or non-positive state";
                     for (int d = 0; d < D && !bad; ++d)
-                        if (!grid_.periodic[d] &&
-                            (s.x[d] < domain_lo_[d] || s.x[d] > domain_hi_[d])) {
+                        if (!grid_.periodic[d] && (x[d] < domain_lo_[d] - escape_margin_ ||
+                                                   x[d] > domain_hi_[d] + escape_margin_)) {
                             bad = true;
                             what = "a position outside the domain";
                         }
@@ -260,10 +277,11 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                             "particle {} reached {} at step {}, t = {:.6g} s: x = [{}], v = [{}], "
                             "rho = {:.6g}",
                             P_.id[i], what, steps_ + 1, time_ + dt_,
-                            fmt::join(s.x.data(), s.x.data() + D, ", "),
-                            fmt::join(s.v.data(), s.v.data() + D, ", "), s.rho);
+                            fmt::join(x.data(), x.data() + D, ", "),
+                            fmt::join(v.data(), v.data() + D, ", "), rho);
                 }
             }
+        }
         group_limits_[static_cast<std::size_t>(group)] = lim;
         group_failure_[static_cast<std::size_t>(group)] = std::move(failure);
         break;
@@ -275,7 +293,8 @@ template <int D>
 void Simulation<D>::step() {
     graph_->run();
     for (const std::string& f : group_failure_)
-        if (!f.empty()) throw RunError(f);
+        if (!f.empty())
+            throw RunError(f);
     P_.swap_buffers();
     TimeStepLimits lim;
     for (const auto& l : group_limits_)
@@ -284,11 +303,11 @@ void Simulation<D>::step() {
     time_ += dt_;
     ++steps_;
     dt_prev_ = dt_;
-    if (!cfg_.fixed_dt) dt_ = lim.min();
+    if (!cfg_.fixed_dt)
+        dt_ = lim.min();
     const auto t0 = std::chrono::steady_clock::now();
     rebin_and_decompose();
-    rebin_seconds_ +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    rebin_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 template <int D>

@@ -12,7 +12,8 @@ int GroupTopology::group_of(MortonKey k) const {
 
 std::vector<MortonKey> cut_by_cost(const std::vector<OccupiedCell>& occupied, int groups) {
     std::vector<MortonKey> begin{0};
-    if (occupied.empty() || groups <= 1) return begin;
+    if (occupied.empty() || groups <= 1)
+        return begin;
     double total = 0;
     for (const auto& c : occupied)
         total += c.cost;
@@ -54,7 +55,8 @@ std::vector<std::vector<int>> group_adjacency(const CellGrid<D>& grid,
             const int n = adjacent_cells(grid, c, nbr);
             for (int k = 0; k < n; ++k) {
                 const auto it = group_of_cell.find(nbr[k].cell);
-                if (it != group_of_cell.end() && it->second != g) adj[g].push_back(it->second);
+                if (it != group_of_cell.end() && it->second != g)
+                    adj[g].push_back(it->second);
             }
         }
         std::sort(adj[g].begin(), adj[g].end());
@@ -65,18 +67,17 @@ std::vector<std::vector<int>> group_adjacency(const CellGrid<D>& grid,
 
 bool adjacency_covers(const std::vector<std::vector<int>>& have,
                       const std::vector<std::vector<int>>& needed) {
-    if (have.size() != needed.size()) return false;
+    if (have.size() != needed.size())
+        return false;
     for (std::size_t g = 0; g < needed.size(); ++g)
         if (!std::includes(have[g].begin(), have[g].end(), needed[g].begin(), needed[g].end()))
             return false;
     return true;
 }
 
-template std::vector<std::vector<int>> group_adjacency<2>(const CellGrid<2>&,
-                                                          const std::vector<OccupiedCell>&,
-                                                          const GroupTopology&);
-template std::vector<std::vector<int>> group_adjacency<3>(const CellGrid<3>&,
-                                                          const std::vector<OccupiedCell>&,
-                                                          const GroupTopology&);
+template std::vector<std::vector<int>>
+group_adjacency<2>(const CellGrid<2>&, const std::vector<OccupiedCell>&, const GroupTopology&);
+template std::vector<std::vector<int>>
+group_adjacency<3>(const CellGrid<3>&, const std::vector<OccupiedCell>&, const GroupTopology&);
 
 } // namespace sluice::tasks

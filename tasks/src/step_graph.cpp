@@ -13,8 +13,8 @@ struct StepGraph::Impl {
     std::vector<std::unique_ptr<Node>> nodes; // index stage * groups + group
 };
 
-StepGraph::StepGraph(std::vector<StageSpec> stages,
-                     const std::vector<std::vector<int>>& neighbours, Body body)
+StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vector<int>>& neighbours,
+                     Body body)
     : impl_(std::make_unique<Impl>()), stages_(std::move(stages)), neighbours_(neighbours),
       groups_(static_cast<int>(neighbours.size())), body_(std::move(body)) {
     const std::size_t n = stages_.size() * static_cast<std::size_t>(groups_);
@@ -24,14 +24,13 @@ StepGraph::StepGraph(std::vector<StageSpec> stages,
     for (int s = 0; s < stage_count(); ++s)
         for (int g = 0; g < groups_; ++g) {
             const std::size_t slot = static_cast<std::size_t>(s * groups_ + g);
-            impl_->nodes.push_back(std::make_unique<Node>(
-                impl_->graph, [this, s, g, slot](const continue_msg&) {
-                    const auto t0 = std::chrono::steady_clock::now();
-                    body_(s, g);
-                    last_seconds_[slot] =
-                        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
-                            .count();
-                }));
+            impl_->nodes.push_back(std::make_unique<Node>(impl_->graph, [this, s, g, slot](
+                                                                            const continue_msg&) {
+                const auto t0 = std::chrono::steady_clock::now();
+                body_(s, g);
+                last_seconds_[slot] =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            }));
         }
     auto node = [&](int s, int g) -> Node& {
         return *impl_->nodes[static_cast<std::size_t>(s * groups_ + g)];

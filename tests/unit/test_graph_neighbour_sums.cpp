@@ -54,27 +54,24 @@ struct Fixture {
     void run_graph() {
         const Neighbourhood<D> nb{&grid, &ranges, std::span<const Vec<D>>(P.x), kernel.support()};
         std::fill(P.rho.begin(), P.rho.end(), -1.0); // poison: a premature read shows up
-        tasks::StepGraph graph({{"density", tasks::Reach::neighbourhood},
-                                {"second", tasks::Reach::neighbourhood}},
-                               topo.neighbours, [&](int stage, int g) {
-                                   for (CellIndex c : topo.cells[static_cast<std::size_t>(g)]) {
-                                       if (stage == 0) {
-                                           summation_density(nb, kernel, c, P,
-                                                             std::span<Real>(P.rho));
-                                           continue;
-                                       }
-                                       const auto adj = nb.adjacent(c);
-                                       for (auto i = nb.begin(c); i < nb.end(c); ++i) {
-                                           Real s = 0;
-                                           nb.for_each_neighbour(
-                                               adj, i, [&](std::uint32_t j, const Vec<D>&, Real r2) {
-                                                   s += P.mass[j] * P.rho[j] *
-                                                        kernel.W(std::sqrt(r2));
-                                               });
-                                           second[i] = s;
-                                       }
-                                   }
-                               });
+        tasks::StepGraph graph(
+            {{"density", tasks::Reach::neighbourhood}, {"second", tasks::Reach::neighbourhood}},
+            topo.neighbours, [&](int stage, int g) {
+                for (CellIndex c : topo.cells[static_cast<std::size_t>(g)]) {
+                    if (stage == 0) {
+                        summation_density(nb, kernel, c, P, std::span<Real>(P.rho));
+                        continue;
+                    }
+                    const auto adj = nb.adjacent(c);
+                    for (auto i = nb.begin(c); i < nb.end(c); ++i) {
+                        Real s = 0;
+                        nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>&, Real r2) {
+                            s += P.mass[j] * P.rho[j] * kernel.W(std::sqrt(r2));
+                        });
+                        second[i] = s;
+                    }
+                }
+            });
         graph.run();
     }
 
@@ -121,8 +118,12 @@ void check_case(std::size_t n, std::array<bool, D> periodic) {
 TEST_CASE("2-D random particles, open box: graph sums equal brute force") {
     check_case<2>(3000, {false, false});
 }
-TEST_CASE("2-D random particles, periodic in x and y") { check_case<2>(3000, {true, true}); }
-TEST_CASE("3-D random particles, open box") { check_case<3>(4000, {false, false, false}); }
+TEST_CASE("2-D random particles, periodic in x and y") {
+    check_case<2>(3000, {true, true});
+}
+TEST_CASE("3-D random particles, open box") {
+    check_case<3>(4000, {false, false, false});
+}
 TEST_CASE("3-D random particles, periodic in x and z") {
     check_case<3>(4000, {true, false, true});
 }

@@ -20,8 +20,10 @@ double integral(const K& k) {
     for (int i = 0; i <= n; ++i) {
         const double r = i * dr;
         double shell = 2; // 1-D: both sides of the origin
-        if (D == 2) shell = 2 * std::numbers::pi * r;
-        if (D == 3) shell = 4 * std::numbers::pi * r * r;
+        if (D == 2)
+            shell = 2 * std::numbers::pi * r;
+        if (D == 3)
+            shell = 4 * std::numbers::pi * r * r;
         const double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
         s += w * shell * k.W(r);
     }
@@ -64,8 +66,7 @@ TEST_CASE("The seed's printed quintic constants: 1-D 120/h is meant as 1/(120h);
     QuinticKernel<3> printed3(h);
     printed3.sigma = 3 / (359 * std::numbers::pi * h * h * h);
     CHECK(integral<3>(printed3) == doctest::Approx(1.0028).epsilon(1e-4));
-    CHECK(QuinticKernel<3>(h).sigma ==
-          doctest::Approx(1 / (120 * std::numbers::pi * h * h * h)));
+    CHECK(QuinticKernel<3>(h).sigma == doctest::Approx(1 / (120 * std::numbers::pi * h * h * h)));
 }
 
 TEST_CASE("Wendland C2: normalisation and gradient") {

@@ -35,11 +35,11 @@ inline MortonKey spread_bits_3(std::uint32_t v) {
 
 template <int D>
 struct CellGrid {
-    Vec<D> lo = Vec<D>::Zero();      // lower corner of the grid
-    Vec<D> length = Vec<D>::Zero();  // extent along each axis
-    Vec<D> edge = Vec<D>::Zero();    // cell edge per axis (>= support)
+    Vec<D> lo = Vec<D>::Zero();     // lower corner of the grid
+    Vec<D> length = Vec<D>::Zero(); // extent along each axis
+    Vec<D> edge = Vec<D>::Zero();   // cell edge per axis (>= support)
     Vec<D> inv_edge = Vec<D>::Zero();
-    std::array<int, D> dims{};       // cells per axis
+    std::array<int, D> dims{}; // cells per axis
     std::array<bool, D> periodic{};
 
     // Grid covering [lo, hi] with cells of edge >= min_edge. Periodic axes get an edge that
@@ -95,9 +95,12 @@ struct CellGrid {
     // Wraps x into the grid along periodic axes.
     void wrap(Vec<D>& x) const {
         for (int d = 0; d < D; ++d) {
-            if (!periodic[d]) continue;
-            if (x[d] < lo[d]) x[d] += length[d];
-            else if (x[d] >= lo[d] + length[d]) x[d] -= length[d];
+            if (!periodic[d])
+                continue;
+            if (x[d] < lo[d])
+                x[d] += length[d];
+            else if (x[d] >= lo[d] + length[d])
+                x[d] -= length[d];
         }
     }
 
@@ -105,7 +108,8 @@ struct CellGrid {
     [[nodiscard]] Vec<D> displacement(const Vec<D>& a, const Vec<D>& b) const {
         Vec<D> d = a - b;
         for (int k = 0; k < D; ++k)
-            if (periodic[k]) d[k] -= length[k] * std::round(d[k] / length[k]);
+            if (periodic[k])
+                d[k] -= length[k] * std::round(d[k] / length[k]);
         return d;
     }
 };

@@ -42,7 +42,8 @@ struct Neighbourhood {
             for (std::uint32_t j = cells->begin[nc]; j < e; ++j) {
                 const Vec<D> dx = xis - x[j];
                 const Real r2 = dx.squaredNorm();
-                if (r2 < support2) f(j, dx, r2);
+                if (r2 < support2)
+                    f(j, dx, r2);
             }
         }
     }

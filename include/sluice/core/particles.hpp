@@ -14,17 +14,17 @@ struct Particles {
     // State at the start of a step (read by every stage of the step).
     std::vector<ParticleId> id;
     std::vector<Kind> kind;
-    std::vector<Vec<D>> x;   // position [m]
-    std::vector<Vec<D>> v;   // velocity [m/s]
-    std::vector<Real> rho;   // density [kg/m^3]
-    std::vector<Real> mass;  // [kg], constant in time
+    std::vector<Vec<D>> x;  // position [m]
+    std::vector<Vec<D>> v;  // velocity [m/s]
+    std::vector<Real> rho;  // density [kg/m^3]
+    std::vector<Real> mass; // [kg], constant in time
 
     // Derived within a step.
-    std::vector<Real> p;       // pressure [Pa]
-    std::vector<Vec<D>> a;     // acceleration [m/s^2]
-    std::vector<Real> drho;    // density rate [kg/m^3/s] (continuity scheme)
+    std::vector<Real> p;          // pressure [Pa]
+    std::vector<Vec<D>> a;        // acceleration [m/s^2]
+    std::vector<Real> drho;       // density rate [kg/m^3/s] (continuity scheme)
     std::vector<Vec<D>> grad_rho; // renormalised density gradient (delta-SPH)
-    std::vector<Vec<D>> v_bc;  // wall particles: velocity seen by the viscous term (Adami)
+    std::vector<Vec<D>> v_bc;     // wall particles: velocity seen by the viscous term (Adami)
 
     // Leap-frog half-step velocity v^{n-1/2}; read and written only by the particle's own
     // integration task, so it needs no second buffer.

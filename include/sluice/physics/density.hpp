@@ -18,7 +18,8 @@ void summation_density(const Neighbourhood<D>& nb, const K& kernel, CellIndex c,
                        const Particles<D>& P, std::span<Real> rho_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
-        if (P.kind[i] != Kind::fluid) continue;
+        if (P.kind[i] != Kind::fluid)
+            continue;
         Real rho = 0;
         nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>&, Real r2) {
             rho += P.mass[j] * kernel.W(std::sqrt(r2));
@@ -35,12 +36,14 @@ void renormalised_density_gradient(const Neighbourhood<D>& nb, const K& kernel, 
                                    const Particles<D>& P, std::span<Vec<D>> grad_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
-        if (P.kind[i] != Kind::fluid) continue;
+        if (P.kind[i] != Kind::fluid)
+            continue;
         Mat<D> M = Mat<D>::Zero();
         Vec<D> g = Vec<D>::Zero();
         const Real rho_i = P.rho[i];
         nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) {
-            if (P.kind[j] != Kind::fluid || r2 <= 0) return;
+            if (P.kind[j] != Kind::fluid || r2 <= 0)
+                return;
             const Vec<D> gradW = grad_W<D>(kernel, dx, std::sqrt(r2));
             const Real Vj = P.mass[j] / P.rho[j];
             M -= Vj * gradW * dx.transpose(); // x_j - x_i = -dx
@@ -51,12 +54,48 @@ void renormalised_density_gradient(const Neighbourhood<D>& nb, const K& kernel, 
     }
 }
 
+// Continuity equation with delta-SPH diffusion (Antuono et al. 2010, eq. 8):
+//   drho_i = sum_j m_j (v_i - v_j) . grad_i W_ij + delta h c0 sum_j psi_ij . grad_i W_ij V_j,
+//   psi_ij = 2 (rho_j - rho_i)(x_j - x_i)/r^2 - (<grad rho>_i + <grad rho>_j),
+// the diffusion over fluid-fluid pairs only (wall densities are extrapolated, not evolved).
+// `vel` is the velocity the leap-frog advances densities with: v^{n+1/2}, the same that
+// drifts the positions, so density and velocity stay staggered like x and v.
+template <int D, class K>
+void continuity_rate(const Neighbourhood<D>& nb, const K& kernel, Real delta_h_c0, CellIndex c,
+                     const Particles<D>& P, std::span<const Vec<D>> vel, std::span<Real> drho_out) {
+    const AdjacentCells<D> adj = nb.adjacent(c);
+    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+        if (P.kind[i] != Kind::fluid)
+            continue;
+        const Real rho_i = P.rho[i];
+        const Vec<D> v_i = vel[i];
+        const Vec<D> g_i = P.grad_rho[i];
+        Real drho = 0;
+        nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) {
+            if (r2 <= 0)
+                return;
+            const Vec<D> gradW = grad_W<D>(kernel, dx, std::sqrt(r2));
+            if (P.kind[j] == Kind::wall) {
+                drho += P.mass[j] * v_i.dot(gradW); // fixed wall: v_j = 0
+                return;
+            }
+            drho += P.mass[j] * (v_i - vel[j]).dot(gradW);
+            if (delta_h_c0 > 0) {
+                const Vec<D> psi = (-2 * (P.rho[j] - rho_i) / r2) * dx - (g_i + P.grad_rho[j]);
+                drho += delta_h_c0 * (P.mass[j] / P.rho[j]) * psi.dot(gradW);
+            }
+        });
+        drho_out[i] = drho;
+    }
+}
+
 // Pressure from the equation of state for the fluid particles of cell c.
 template <int D>
 void equation_of_state(const Neighbourhood<D>& nb, const Eos& eos, CellIndex c,
                        const Particles<D>& P, std::span<Real> p_out) {
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
-        if (P.kind[i] == Kind::fluid) p_out[i] = eos.pressure(P.rho[i]);
+        if (P.kind[i] == Kind::fluid)
+            p_out[i] = eos.pressure(P.rho[i]);
 }
 
 } // namespace sluice

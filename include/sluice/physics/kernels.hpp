@@ -33,17 +33,23 @@ struct QuinticKernel {
     [[nodiscard]] Real W(Real r) const {
         const Real q = r * inv_h;
         Real w = 0;
-        if (q < 3) w += p5(3 - q);
-        if (q < 2) w -= 6 * p5(2 - q);
-        if (q < 1) w += 15 * p5(1 - q);
+        if (q < 3)
+            w += p5(3 - q);
+        if (q < 2)
+            w -= 6 * p5(2 - q);
+        if (q < 1)
+            w += 15 * p5(1 - q);
         return sigma * w;
     }
     [[nodiscard]] Real dW(Real r) const {
         const Real q = r * inv_h;
         Real w = 0;
-        if (q < 3) w -= 5 * p4(3 - q);
-        if (q < 2) w += 30 * p4(2 - q);
-        if (q < 1) w -= 75 * p4(1 - q);
+        if (q < 3)
+            w -= 5 * p4(3 - q);
+        if (q < 2)
+            w += 30 * p4(2 - q);
+        if (q < 1)
+            w -= 75 * p4(1 - q);
         return sigma * inv_h * w;
     }
 
@@ -69,7 +75,8 @@ struct WendlandC2Kernel {
     [[nodiscard]] Real support() const { return 2 * h; }
     [[nodiscard]] Real W(Real r) const {
         const Real q = r * inv_h;
-        if (q >= 2) return 0;
+        if (q >= 2)
+            return 0;
         const Real t = 1 - q / 2;
         if constexpr (D == 1)
             return sigma * t * t * t * (1.5 * q + 1);
@@ -78,7 +85,8 @@ struct WendlandC2Kernel {
     }
     [[nodiscard]] Real dW(Real r) const {
         const Real q = r * inv_h;
-        if (q >= 2) return 0;
+        if (q >= 2)
+            return 0;
         const Real t = 1 - q / 2;
         if constexpr (D == 1)
             return sigma * inv_h * (-3 * q) * t * t; // d/dq[(1-q/2)^3(1.5q+1)] = -3q(1-q/2)^2
@@ -105,15 +113,19 @@ struct CubicSplineKernel {
     [[nodiscard]] Real support() const { return 2 * h; }
     [[nodiscard]] Real W(Real r) const {
         const Real q = r * inv_h;
-        if (q >= 2) return 0;
-        if (q < 1) return sigma * (1 - 1.5 * q * q + 0.75 * q * q * q);
+        if (q >= 2)
+            return 0;
+        if (q < 1)
+            return sigma * (1 - 1.5 * q * q + 0.75 * q * q * q);
         const Real t = 2 - q;
         return sigma * 0.25 * t * t * t;
     }
     [[nodiscard]] Real dW(Real r) const {
         const Real q = r * inv_h;
-        if (q >= 2) return 0;
-        if (q < 1) return sigma * inv_h * (-3 * q + 2.25 * q * q);
+        if (q >= 2)
+            return 0;
+        if (q < 1)
+            return sigma * inv_h * (-3 * q + 2.25 * q * q);
         const Real t = 2 - q;
         return sigma * inv_h * (-0.75 * t * t);
     }
@@ -125,9 +137,12 @@ using AnyKernel = std::variant<QuinticKernel<D>, WendlandC2Kernel<D>, CubicSplin
 template <int D>
 AnyKernel<D> make_kernel(KernelType type, Real h) {
     switch (type) {
-    case KernelType::quintic: return QuinticKernel<D>(h);
-    case KernelType::wendland_c2: return WendlandC2Kernel<D>(h);
-    case KernelType::cubic_spline: return CubicSplineKernel<D>(h);
+    case KernelType::quintic:
+        return QuinticKernel<D>(h);
+    case KernelType::wendland_c2:
+        return WendlandC2Kernel<D>(h);
+    case KernelType::cubic_spline:
+        return CubicSplineKernel<D>(h);
     }
     return QuinticKernel<D>(h);
 }
@@ -140,7 +155,8 @@ inline double kernel_support_factor(KernelType type) {
 // Gradient of W with respect to x_i for the pair displacement dx = x_i - x_j at distance r.
 template <int D, class K>
 inline Vec<D> grad_W(const K& kernel, const Vec<D>& dx, Real r) {
-    if (r <= 0) return Vec<D>::Zero();
+    if (r <= 0)
+        return Vec<D>::Zero();
     return (kernel.dW(r) / r) * dx;
 }
 

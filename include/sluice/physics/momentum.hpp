@@ -1,59 +1,63 @@
 #pragma once
-// Acceleration of fluid particles and, for the continuity scheme, their density rate.
+// Acceleration of fluid particles.
 //   pressure:   -sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2) grad_i W_ij          (Monaghan 1992)
 //   viscosity:  sum_j m_j (mu_i + mu_j)/(rho_i rho_j) (x_ij . grad_i W_ij)/(r^2 + eta^2) v_ij
 //               (Morris et al. 1997; seed 000 eq. 7)
 //   artificial: -sum_j m_j Pi_ij grad_i W_ij, Pi_ij = -alpha c0 h (v_ij.x_ij)/(r^2+eta^2)/rho_ij
 //               for approaching pairs (Monaghan 1992)
-//   continuity: drho_i = sum_j m_j v_ij . grad_i W_ij + delta h c0 sum_j psi_ij . grad_i W_ij V_j,
-//               psi_ij = 2 (rho_j - rho_i)(x_j - x_i)/r^2 - (<grad rho>_i + <grad rho>_j)
-//               (Antuono et al. 2010, eq. 8; fluid-fluid pairs only)
 // Wall (dummy) neighbours enter with their extrapolated pressure/density and, in the viscous
-// terms, their boundary velocity v_bc (Adami, Hu & Adams 2012).
+// terms, their boundary velocity v_bc (Adami, Hu & Adams 2012). In fluid-wall pairs both
+// pressures are clipped from below at the background pressure: a wall may push but never
+// pull, otherwise the tension of an expanding free-surface tip (rho < rho0) drags particles
+// into the wall.
 #include "sluice/core/neighbourhood.hpp"
 #include "sluice/core/particles.hpp"
 #include "sluice/physics/kernels.hpp"
+
+#include <algorithm>
 
 namespace sluice {
 
 template <int D>
 struct MomentumParams {
     Vec<D> gravity = Vec<D>::Zero();
-    Real mu = 0;           // dynamic viscosity [Pa s]
-    Real alpha = 0;        // artificial viscosity coefficient
-    Real c0 = 0;           // reference speed of sound
-    Real h = 0;            // smoothing length
-    bool continuity = false;
-    Real delta = 0;        // delta-SPH coefficient (continuity only)
+    Real mu = 0;              // dynamic viscosity [Pa s]
+    Real alpha = 0;           // artificial viscosity coefficient
+    Real c0 = 0;              // reference speed of sound
+    Real h = 0;               // smoothing length
     bool wall_viscous = true; // no-slip walls: viscous terms act against wall particles
+    Real p_floor = 0;         // lowest pressure a fluid-wall pair acts with (background pressure)
 };
 
 template <int D, class K>
 void acceleration(const Neighbourhood<D>& nb, const K& kernel, const MomentumParams<D>& prm,
-                  CellIndex c, const Particles<D>& P, std::span<Vec<D>> a_out,
-                  std::span<Real> drho_out) {
+                  CellIndex c, const Particles<D>& P, std::span<Vec<D>> a_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     const Real eta2 = Real(0.01) * prm.h * prm.h;
     const Real two_mu = 2 * prm.mu;
-    const Real delta_h_c0 = prm.delta * prm.h * prm.c0;
     const Real av = prm.alpha * prm.h * prm.c0;
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
-        if (P.kind[i] != Kind::fluid) continue;
+        if (P.kind[i] != Kind::fluid)
+            continue;
         const Real rho_i = P.rho[i];
         const Real p_over_rho2_i = P.p[i] / (rho_i * rho_i);
         const Vec<D> v_i = P.v[i];
-        const Vec<D> g_i = P.grad_rho[i];
         Vec<D> acc = Vec<D>::Zero();
-        Real drho = 0;
         nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) {
-            if (r2 <= 0) return;
+            if (r2 <= 0)
+                return;
             const Real r = std::sqrt(r2);
             const Real dWr = kernel.dW(r) / r;
             const Vec<D> gradW = dWr * dx;
             const Real rho_j = P.rho[j];
             const Real m_j = P.mass[j];
             const bool wall = P.kind[j] == Kind::wall;
-            acc -= m_j * (p_over_rho2_i + P.p[j] / (rho_j * rho_j)) * gradW;
+            if (wall) {
+                const Real pi = std::max(P.p[i], prm.p_floor), pj = std::max(P.p[j], prm.p_floor);
+                acc -= m_j * (pi / (rho_i * rho_i) + pj / (rho_j * rho_j)) * gradW;
+            } else {
+                acc -= m_j * (p_over_rho2_i + P.p[j] / (rho_j * rho_j)) * gradW;
+            }
 
             if (!wall || prm.wall_viscous) {
                 const Vec<D> v_ij = v_i - (wall ? P.v_bc[j] : P.v[j]);
@@ -67,16 +71,8 @@ void acceleration(const Neighbourhood<D>& nb, const K& kernel, const MomentumPar
                     }
                 }
             }
-            if (prm.continuity) {
-                drho += m_j * (v_i - P.v[j]).dot(gradW);
-                if (delta_h_c0 > 0 && !wall) {
-                    const Vec<D> psi = (-2 * (rho_j - rho_i) / r2) * dx - (g_i + P.grad_rho[j]);
-                    drho += delta_h_c0 * (m_j / rho_j) * psi.dot(gradW);
-                }
-            }
         });
         a_out[i] = acc + prm.gravity;
-        drho_out[i] = drho;
     }
 }
 

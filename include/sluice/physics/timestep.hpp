@@ -28,8 +28,10 @@ inline TimeStepLimits particle_time_step(const TimeStepParams& prm, Real c, Real
                                          Real accel) {
     TimeStepLimits l;
     l.acoustic = prm.cfl * prm.h / (c + speed);
-    if (prm.nu > 0) l.viscous = prm.viscous_cfl * prm.h * prm.h / prm.nu;
-    if (accel > 0) l.force = prm.force_cfl * std::sqrt(prm.h / accel);
+    if (prm.nu > 0)
+        l.viscous = prm.viscous_cfl * prm.h * prm.h / prm.nu;
+    if (accel > 0)
+        l.force = prm.force_cfl * std::sqrt(prm.h / accel);
     return l;
 }
 

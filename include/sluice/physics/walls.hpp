@@ -27,12 +27,15 @@ void reflect(const std::vector<Plane<D>>& planes, Real restitution, Vec<D>& x, V
              Vec<D>& v) {
     for (const Plane<D>& pl : planes) {
         const Real s = (x - pl.point).dot(pl.normal);
-        if (s >= 0) continue;
+        if (s >= 0)
+            continue;
         x -= 2 * s * pl.normal;
         const Real vn_half = v_half.dot(pl.normal);
-        if (vn_half < 0) v_half -= (1 + restitution) * vn_half * pl.normal;
+        if (vn_half < 0)
+            v_half -= (1 + restitution) * vn_half * pl.normal;
         const Real vn = v.dot(pl.normal);
-        if (vn < 0) v -= (1 + restitution) * vn * pl.normal;
+        if (vn < 0)
+            v -= (1 + restitution) * vn * pl.normal;
     }
 }
 
@@ -43,12 +46,14 @@ void dummy_wall_state(const Neighbourhood<D>& nb, const K& kernel, const Eos& eo
                       const Vec<D>& gravity, bool no_slip, CellIndex c, Particles<D>& P) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     for (std::uint32_t w = nb.begin(c); w < nb.end(c); ++w) {
-        if (P.kind[w] != Kind::wall) continue;
+        if (P.kind[w] != Kind::wall)
+            continue;
         Real sum_w = 0, sum_pw = 0;
         Vec<D> sum_rho_r = Vec<D>::Zero();
         Vec<D> sum_v = Vec<D>::Zero();
         nb.for_each_neighbour(adj, w, [&](std::uint32_t f, const Vec<D>& dx, Real r2) {
-            if (P.kind[f] != Kind::fluid) return;
+            if (P.kind[f] != Kind::fluid)
+                return;
             const Real W = kernel.W(std::sqrt(r2));
             sum_w += W;
             sum_pw += P.p[f] * W;

@@ -9,9 +9,9 @@
 namespace sluice {
 
 struct RunOptions {
-    std::string out_dir;   // results folder (created; snapshots/, probes/, summary.json)
-    int threads = 0;       // 0 = all hardware threads
-    bool quiet = false;    // no progress output
+    std::string out_dir; // results folder (created; snapshots/, probes/, summary.json)
+    int threads = 0;     // 0 = all hardware threads
+    bool quiet = false;  // no progress output
     bool verbose = false;
 };
 
@@ -19,7 +19,7 @@ struct RunResult {
     std::int64_t steps = 0;
     double simulated_time = 0;
     double wall_seconds = 0;
-    std::size_t particles = 0;      // fluid + wall
+    std::size_t particles = 0; // fluid + wall
     std::size_t fluid_particles = 0;
     double particle_steps_per_second = 0;
     double mass_initial = 0, mass_final = 0;
@@ -29,12 +29,12 @@ struct RunResult {
 struct CaseInfo {
     std::size_t fluid_particles = 0;
     std::size_t wall_particles = 0;
-    double memory_bytes = 0;       // estimate of the particle state
-    double h = 0;                  // smoothing length [m]
-    double support = 0;            // kernel support radius [m]
-    double dt_estimate = 0;        // stable time step at rest [s]
+    double memory_bytes = 0; // estimate of the particle state
+    double h = 0;            // smoothing length [m]
+    double support = 0;      // kernel support radius [m]
+    double dt_estimate = 0;  // stable time step at rest [s]
     double dt_acoustic = 0, dt_viscous = 0, dt_force = 0;
-    std::size_t cells = 0;         // micro-cells of the grid
+    std::size_t cells = 0;            // micro-cells of the grid
     std::vector<std::string> physics; // human-readable list of what is switched on
 };
 

@@ -60,7 +60,7 @@ private:
     template <class K>
     void run_stage_with(const K& kernel, int stage, int group);
 
-    enum class StageKind { density, walls, accel, integrate };
+    enum class StageKind { density, walls, accel, kick, drift };
 
     CaseConfig cfg_;
     Particles<D> P_;
@@ -73,7 +73,10 @@ private:
     TimeStepParams ts_params_;
     std::vector<Plane<D>> planes_;
     Vec<D> domain_lo_, domain_hi_;
+    double escape_margin_ = 0;
     double h_ = 0;
+    bool continuity_ = false;
+    double delta_h_c0_ = 0; // delta-SPH coefficient times h c0
 
     tasks::GroupTopology topo_;
     std::unique_ptr<tasks::StepGraph> graph_;
@@ -82,7 +85,7 @@ private:
     int target_groups_ = 1;
     bool density_only_ = false;
 
-    // Per-group results of the integrate stage.
+    // Per-group results of the drift stage.
     std::vector<TimeStepLimits> group_limits_;
     std::vector<std::string> group_failure_;
 
