@@ -69,6 +69,7 @@ struct CaseConfig {
     DensityScheme density = DensityScheme::continuity;
     double delta_sph = 0.1;       // delta-SPH diffusion coefficient (0 = off; continuity only)
     double artificial_viscosity = 0; // Monaghan alpha (0 = off)
+    double shifting = 0;          // particle-shifting coefficient A (0 = off; 4 = Sun et al. 2017)
     double cfl = 0.25;            // acoustic CFL number: dt <= cfl*h/(c0 + |v|max)
     double viscous_cfl = 0.125;   // dt <= viscous_cfl * h^2 / nu
     double force_cfl = 0.25;      // dt <= force_cfl * sqrt(h/|a|max)

@@ -1,0 +1,25 @@
+#pragma once
+// Reads and validates a TOML case file (layout: docs/CASE_REFERENCE.md).
+#include "sluice/io/case_config.hpp"
+
+#include <string>
+#include <vector>
+
+namespace sluice {
+
+// Parses `path`, applies `overrides` and returns a fully validated case.
+//
+// Each override is "key=value" (from `--set`): the key is a dotted path such as
+// "numerics.kernel" or "blocks.0.lo" (also written "blocks[0].lo"); the value is parsed as a
+// TOML value, and text that is not valid TOML is taken as a string, so
+// `numerics.kernel=wendland_c2` works without quotes. Overrides may only name keys the
+// schema knows, and entries of [[blocks]] / [[probes]] / [[walls.planes]] that exist.
+//
+// Every problem (unreadable file, syntax, unknown key, wrong type, missing key, impossible
+// value) throws sluice::CaseError naming the file, the offending key and the reason.
+CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Upper bound on the fluid particle count a case may ask for (estimated from the blocks).
+inline constexpr double max_case_particles = 50e6;
+
+} // namespace sluice

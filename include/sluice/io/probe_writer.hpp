@@ -1,0 +1,40 @@
+#pragma once
+// Probe time series: one CSV per probe at <out>/probes/<name>.csv, e.g.
+//   time_s,pressure_Pa
+//   0.01,4905.1234
+// Values are written in the shortest form that reads back to the same double; a dry probe
+// writes "nan". Each row is flushed, so the file is usable while the run goes on.
+#include "sluice/io/case_config.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sluice {
+
+// Header of the CSV for a probe type: "time_s,pressure_Pa", "time_s,water_level_m",
+// "time_s,front_x_m".
+std::string probe_csv_header(ProbeType type);
+
+class ProbeWriter {
+public:
+    // Creates <out_dir>/probes/ and one file per probe (truncating earlier ones), header first.
+    // Throws std::runtime_error when a file cannot be created.
+    ProbeWriter(const std::string& out_dir, const std::vector<ProbeConfig>& probes);
+
+    // Appends one row to probe number `index` (in the order given to the constructor).
+    void write(std::size_t index, double time, double value);
+
+    [[nodiscard]] std::size_t size() const { return files_.size(); }
+    [[nodiscard]] const std::string& path(std::size_t index) const { return paths_.at(index); }
+
+private:
+    struct Close {
+        void operator()(std::FILE* f) const { std::fclose(f); }
+    };
+    std::vector<std::unique_ptr<std::FILE, Close>> files_;
+    std::vector<std::string> paths_;
+};
+
+} // namespace sluice

@@ -1,0 +1,55 @@
+#pragma once
+// Particle snapshots as HDF5 files plus one XDMF file that ParaView opens as a time series.
+//
+//   <out>/snapshots/snap_000000.h5, snap_000001.h5, ...   (numbered by snapshot, from 0)
+//   <out>/snapshots.xmf                                    (references every snapshot so far)
+//
+// Each .h5 holds one dataset per field at the root: position, velocity, acceleration (N x 3
+// float64; 2-D cases are padded with z = 0), density, pressure, mass (N float64), id (N
+// uint64), kind (N uint8: 0 fluid, 1 wall), and the root attributes time [s] (float64),
+// step (int64) and dimension (int32). position is always written: it is the XDMF geometry.
+// Files are written under a temporary name and renamed, so a snapshot or the .xmf is either
+// complete or absent under its final name.
+#include "sluice/core/particles.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace sluice {
+
+template <int D>
+class SnapshotWriter {
+public:
+    // Creates <out_dir>/snapshots/ and removes snapshots of an earlier run in the same folder
+    // (snap_*.h5 and snapshots.xmf), so the series on disk is always this run's.
+    // Throws std::invalid_argument for a field name outside the list above.
+    SnapshotWriter(std::string out_dir, std::vector<std::string> fields);
+
+    // Writes the next snapshot and rewrites the .xmf; returns the path of the .h5 written.
+    // Throws std::runtime_error when a file cannot be written.
+    std::string write(const Particles<D>& particles, double time, long step);
+
+    [[nodiscard]] std::size_t count() const { return written_.size(); }
+    [[nodiscard]] const std::string& xmf_path() const { return xmf_path_; }
+
+private:
+    struct Written {
+        std::string file; // relative to out_dir, e.g. snapshots/snap_000003.h5
+        double time;
+        std::size_t particles;
+    };
+
+    void write_h5(const std::string& path, const Particles<D>& particles, double time,
+                  long step) const;
+    void write_xmf() const;
+
+    std::string out_dir_, xmf_path_;
+    std::vector<std::string> fields_; // position first, no duplicates
+    std::vector<Written> written_;
+};
+
+extern template class SnapshotWriter<2>;
+extern template class SnapshotWriter<3>;
+
+} // namespace sluice

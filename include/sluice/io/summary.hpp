@@ -1,0 +1,24 @@
+#pragma once
+// summary.json: the record of a finished run. Written only at a successful end, atomically
+// (temporary file + rename), so its presence means the results folder is complete.
+#include "sluice/io/case_config.hpp"
+#include "sluice/solver/run.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace sluice {
+
+// The summary as JSON. Keys: case, description, source_file, dimension, particles,
+// fluid_particles, steps, simulated_time, end_time, wall_seconds, particle_steps_per_second,
+// threads, ranks, version, git_revision, mass_initial, mass_final, mass_relative_change, and
+// `extra` (an object; e.g. stage timings added by the solver). Non-finite numbers become null.
+nlohmann::json make_summary(const CaseConfig& cfg, const RunResult& result, int threads, int ranks,
+                            const nlohmann::json& extra = nlohmann::json::object());
+
+// Writes make_summary(...) to <out_dir>/summary.json. Throws std::runtime_error on failure.
+void write_summary(const std::string& out_dir, const CaseConfig& cfg, const RunResult& result,
+                   int threads, int ranks, const nlohmann::json& extra = nlohmann::json::object());
+
+} // namespace sluice

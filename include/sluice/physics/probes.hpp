@@ -1,0 +1,93 @@
+#pragma once
+// Probes: scalar measurements of the particle state, sampled once per probe interval.
+// Pure functions over all particles (O(N) per call, no neighbour structure needed); only fluid
+// particles are measured. The vertical axis is the last one: y in 2-D, z in 3-D.
+#include "sluice/core/particles.hpp"
+#include "sluice/physics/kernels.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace sluice {
+
+namespace detail {
+template <class T>
+struct is_variant : std::false_type {};
+template <class... T>
+struct is_variant<std::variant<T...>> : std::true_type {};
+} // namespace detail
+
+// Pressure at `point` by Shepard-normalised kernel interpolation over fluid particles:
+//   p(point) = sum_j p_j W_j V_j / sum_j W_j V_j,   V_j = m_j / rho_j,
+// so a probe near the free surface or a wall is not biased by the missing neighbours.
+// Returns NaN when no fluid particle lies within the kernel support of `point` (the probe is
+// dry). `kernel` is any kernel type of kernels.hpp or an AnyKernel<D>.
+template <int D, class K>
+Real pressure_probe(const Particles<D>& ps, const K& kernel, const Vec<D>& point) {
+    if constexpr (detail::is_variant<K>::value) {
+        return std::visit([&](const auto& k) { return pressure_probe(ps, k, point); }, kernel);
+    } else {
+        const Real support2 = kernel.support() * kernel.support();
+        Real num = 0, den = 0;
+        for (std::size_t j = 0; j < ps.size(); ++j) {
+            if (ps.kind[j] != Kind::fluid)
+                continue;
+            const Real r2 = (ps.x[j] - point).squaredNorm();
+            if (r2 >= support2)
+                continue;
+            const Real wv = kernel.W(std::sqrt(r2)) * ps.mass[j] / ps.rho[j];
+            num += ps.p[j] * wv;
+            den += wv;
+        }
+        return den > 0 ? num / den : std::numeric_limits<Real>::quiet_NaN();
+    }
+}
+
+// Indices (ascending) of the fluid particles forming the bulk: fluid particles are linked when
+// their distance is <= 1.5 dx, and the bulk is the connected component with the most
+// particles (ties: the one holding the smallest particle id). Spray droplets and detached jets
+// are therefore excluded. Empty when there is no fluid. O(N) with a cell hash + union-find.
+template <int D>
+std::vector<std::size_t> bulk_fluid(const Particles<D>& ps, Real dx);
+
+// The functions below find the bulk themselves; when several probes are sampled at the same
+// time, compute bulk_fluid() once and pass it to the overloads taking `bulk`.
+
+// Free-surface height at horizontal position x: among bulk fluid particles with
+// |x_i - x| <= dx (in 3-D: over the whole slab, across the tank width), the highest vertical
+// coordinate, plus dx/2 (a particle stands for a lattice cell of size dx, so a block of
+// height H filled at dx gives exactly H). NaN when no bulk particle is in the column (dry).
+template <int D>
+Real water_level(const Particles<D>& ps, Real dx, Real x);
+template <int D>
+Real water_level(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx, Real x);
+
+// Surge front: the largest x over the bulk fluid, plus dx/2 (the cell edge, as above).
+// NaN when there is no fluid.
+template <int D>
+Real surge_front(const Particles<D>& ps, Real dx);
+template <int D>
+Real surge_front(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx);
+
+extern template std::vector<std::size_t> bulk_fluid<2>(const Particles<2>&, Real);
+extern template std::vector<std::size_t> bulk_fluid<3>(const Particles<3>&, Real);
+extern template Real water_level<2>(const Particles<2>&, Real, Real);
+extern template Real water_level<3>(const Particles<3>&, Real, Real);
+extern template Real surge_front<2>(const Particles<2>&, Real);
+extern template Real surge_front<3>(const Particles<3>&, Real);
+extern template Real water_level<2>(const Particles<2>&, const std::vector<std::size_t>&, Real,
+                                    Real);
+extern template Real water_level<3>(const Particles<3>&, const std::vector<std::size_t>&, Real,
+                                    Real);
+extern template Real surge_front<2>(const Particles<2>&, const std::vector<std::size_t>&, Real);
+extern template Real surge_front<3>(const Particles<3>&, const std::vector<std::size_t>&, Real);
+extern template Real pressure_probe<2, AnyKernel<2>>(const Particles<2>&, const AnyKernel<2>&,
+                                                     const Vec<2>&);
+extern template Real pressure_probe<3, AnyKernel<3>>(const Particles<3>&, const AnyKernel<3>&,
+                                                     const Vec<3>&);
+
+} // namespace sluice

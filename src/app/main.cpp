@@ -1,0 +1,145 @@
+// The `sluice` command line: run a case, describe a case.
+// Exit codes: 0 success, 1 unexpected failure, 2 bad case file or bad command line,
+// 3 the run failed physically (RunError).
+#include "sluice/io/case_reader.hpp"
+#include "sluice/io/errors.hpp"
+#include "sluice/solver/run.hpp"
+#include "sluice/version.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr int kExitFailure = 1, kExitCaseError = 2, kExitRunError = 3;
+
+std::string version_string() {
+    const std::string rev = sluice::git_revision;
+    return fmt::format("sluice {} ({})", sluice::version, rev.empty() ? "unknown revision" : rev);
+}
+
+std::string human_bytes(double bytes) {
+    const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB"};
+    int u = 0;
+    while (bytes >= 1024 && u < 4) {
+        bytes /= 1024;
+        ++u;
+    }
+    return fmt::format("{:.1f} {}", bytes, units[u]);
+}
+
+const char* kernel_name(sluice::KernelType k) {
+    switch (k) {
+    case sluice::KernelType::quintic:
+        return "quintic";
+    case sluice::KernelType::wendland_c2:
+        return "wendland_c2";
+    case sluice::KernelType::cubic_spline:
+        return "cubic_spline";
+    }
+    return "?";
+}
+
+void print_info(const sluice::CaseConfig& cfg, const sluice::CaseInfo& info) {
+    fmt::print("case        {}  ({})\n", cfg.name, cfg.source_file);
+    if (!cfg.description.empty())
+        fmt::print("            {}\n", cfg.description);
+    fmt::print("dimension   {}-D\n", cfg.dimension);
+    fmt::print("particles   {} fluid + {} wall = {}\n", info.fluid_particles, info.wall_particles,
+               info.fluid_particles + info.wall_particles);
+    fmt::print("memory      ~{} (particle state)\n", human_bytes(info.memory_bytes));
+    fmt::print("h           {:.6g} m  (dx = {:.6g} m, h/dx = {:.6g})\n", info.h, cfg.dx,
+               cfg.h_over_dx);
+    fmt::print("kernel      {}, support {:.6g} m\n", kernel_name(cfg.kernel), info.support);
+    if (cfg.fixed_dt)
+        fmt::print("dt          {:.4g} s fixed  (stable estimate {:.4g} s)\n", *cfg.fixed_dt,
+                   info.dt_estimate);
+    else
+        fmt::print("dt          {:.4g} s  (~{:.0f} steps to t = {:.6g} s)\n", info.dt_estimate,
+                   info.dt_estimate > 0 ? cfg.end_time / info.dt_estimate : 0.0, cfg.end_time);
+    fmt::print("  limits    acoustic {:.4g} s, viscous {:.4g} s, body force {:.4g} s\n",
+               info.dt_acoustic, info.dt_viscous, info.dt_force);
+    fmt::print("cells       {}\n", info.cells);
+    fmt::print("physics\n");
+    for (const auto& p : info.physics)
+        fmt::print("  - {}\n", p);
+}
+
+// Adds the case file argument and --set, shared by `run` and `info`.
+void add_case_options(CLI::App* cmd, std::string& case_path, std::vector<std::string>& sets) {
+    cmd->add_option("case", case_path, "Case file (TOML, see docs/CASE_REFERENCE.md)")->required();
+    // One key=value per --set, so a following positional is never swallowed.
+    cmd->add_option("--set", sets,
+                    "Override a case value, e.g. --set numerics.kernel=wendland_c2 "
+                    "(repeatable)")
+        ->type_name("KEY=VALUE")
+        ->allow_extra_args(false);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"sluice: particle (SPH) solver for free-surface flow", "sluice"};
+    app.failure_message([](const CLI::App*, const CLI::Error& e) {
+        return fmt::format("sluice: error: {}\nRun with --help for more information.\n", e.what());
+    });
+    app.set_version_flag("--version", version_string());
+    app.require_subcommand(1);
+
+    std::string case_path, out_dir;
+    std::vector<std::string> sets;
+    int threads = 0;
+    bool quiet = false, verbose = false;
+
+    CLI::App* run = app.add_subcommand("run", "Run a case to its end time");
+    add_case_options(run, case_path, sets);
+    run->add_option("--out", out_dir, "Results folder (default: results/<case name>)");
+    run->add_option("--threads", threads, "Worker threads (0 = all hardware threads)")
+        ->check(CLI::Range(0, 65536));
+    auto* quiet_flag = run->add_flag("--quiet,-q", quiet, "No progress output");
+    run->add_flag("--verbose,-v", verbose, "Detailed log")->excludes(quiet_flag);
+
+    CLI::App* info = app.add_subcommand("info", "Describe a case without running it");
+    add_case_options(info, case_path, sets);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        // --help / --version exit 0; every usage error is a bad command line: 2.
+        return app.exit(e) == 0 ? 0 : kExitCaseError;
+    }
+
+    try {
+        // Everything is validated here, before the solver creates the results folder.
+        const sluice::CaseConfig cfg = sluice::read_case(case_path, sets);
+        if (run->parsed()) {
+            sluice::RunOptions opts;
+            opts.out_dir = out_dir.empty() ? "results/" + cfg.name : out_dir;
+            opts.threads = threads;
+            opts.quiet = quiet;
+            opts.verbose = verbose;
+            const sluice::RunResult result = sluice::run_case(cfg, opts);
+            if (!quiet)
+                fmt::print(stderr,
+                           "sluice: done: {} steps to t = {:.6g} s in {:.1f} s; results in {}\n",
+                           result.steps, result.simulated_time, result.wall_seconds, opts.out_dir);
+        } else {
+            print_info(cfg, sluice::describe_case(cfg));
+        }
+    } catch (const sluice::CaseError& e) {
+        fmt::print(stderr, "sluice: error: {}\n", e.what());
+        return kExitCaseError;
+    } catch (const sluice::RunError& e) {
+        fmt::print(stderr, "sluice: error: the run failed: {}\n", e.what());
+        return kExitRunError;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "sluice: error: {}\n", e.what());
+        return kExitFailure;
+    }
+    return 0;
+}

@@ -1,0 +1,926 @@
+// TOML case file -> validated CaseConfig. The schema below and docs/CASE_REFERENCE.md describe
+// the same layout; keep them in step.
+#include "sluice/io/case_reader.hpp"
+
+#include "sluice/io/errors.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <utility>
+
+namespace sluice {
+namespace {
+
+// Keys each table accepts. Entries of arrays of tables are listed under the array's name
+// without an index ("walls.planes"); "" is the top level.
+const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
+    {"",
+     {"case", "domain", "fluid", "particles", "blocks", "numerics", "walls", "time", "output",
+      "probes", "runtime"}},
+    {"case", {"name", "description", "dimension"}},
+    {"domain", {"lo", "hi", "periodic"}},
+    {"fluid",
+     {"rho0", "viscosity", "sound_speed", "gravity", "eos", "gamma", "background_pressure"}},
+    {"particles", {"dx"}},
+    {"blocks", {"lo", "hi", "velocity", "profile", "amplitude", "hydrostatic"}},
+    {"numerics",
+     {"kernel", "h_over_dx", "density", "delta_sph", "artificial_viscosity", "shifting", "cfl",
+      "viscous_cfl", "force_cfl", "dt"}},
+    {"walls", {"model", "tank_lo", "tank_hi", "tank_faces", "restitution", "no_slip", "planes"}},
+    {"walls.planes", {"point", "normal"}},
+    {"time", {"end_time", "output_interval"}},
+    {"output", {"snapshots", "fields"}},
+    {"probes", {"name", "type", "position", "x", "interval"}},
+    {"runtime", {"particles_per_group"}},
+};
+const std::set<std::string, std::less<>> kArrayTables = {"blocks", "probes", "walls.planes"};
+
+const std::vector<std::string> kFieldNames = {"position",     "velocity", "density", "pressure",
+                                              "acceleration", "mass",     "id",      "kind"};
+
+constexpr const char* kAxis = "xyz";
+
+std::string join_key(std::string_view path, std::string_view key) {
+    return path.empty() ? std::string(key) : fmt::format("{}.{}", path, key);
+}
+
+std::string join_list(const std::vector<std::string>& items) {
+    std::string out;
+    for (const auto& s : items)
+        out += (out.empty() ? "" : ", ") + s;
+    return out;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+// "unknown key; did you mean 'x'? allowed: ..." — typos are the usual cause.
+std::string unknown_key_reason(std::string_view key, std::string_view table,
+                               const std::vector<std::string>& allowed) {
+    std::string best;
+    std::size_t best_d = 3; // only suggest close matches
+    for (const auto& a : allowed) {
+        const std::size_t d = edit_distance(key, a);
+        if (d < best_d) {
+            best_d = d;
+            best = a;
+        }
+    }
+    std::string where = table.empty() ? "at the top level" : fmt::format("in [{}]", table);
+    std::string r = fmt::format("unknown key {}", where);
+    if (!best.empty())
+        r += fmt::format("; did you mean '{}'?", best);
+    return r + fmt::format(" (allowed: {})", join_list(allowed));
+}
+
+std::string type_name(const toml::node& n) {
+    switch (n.type()) {
+    case toml::node_type::table:
+        return "a table";
+    case toml::node_type::array:
+        return "an array";
+    case toml::node_type::string:
+        return "a string";
+    case toml::node_type::integer:
+        return "an integer";
+    case toml::node_type::floating_point:
+        return "a floating-point number";
+    case toml::node_type::boolean:
+        return "a boolean";
+    case toml::node_type::date:
+        return "a date";
+    case toml::node_type::time:
+        return "a time";
+    case toml::node_type::date_time:
+        return "a date-time";
+    default:
+        return "nothing";
+    }
+}
+
+// Raises CaseErrors for one file and remembers which keys came from --set, so a bad value
+// given on the command line is not blamed on a line of the file.
+class Reader {
+public:
+    explicit Reader(std::string file) : file_(std::move(file)) {}
+
+    [[noreturn]] void fail(const std::string& key, const std::string& reason,
+                           const toml::node* at = nullptr) const {
+        std::string r = reason;
+        if (overridden_.count(key) != 0)
+            r += " (value given with --set)";
+        else if (at != nullptr && at->source().begin.line > 0)
+            r += fmt::format(" (line {})", at->source().begin.line);
+        throw CaseError(file_, key, r);
+    }
+
+    void mark_overridden(const std::string& key) { overridden_.insert(key); }
+    [[nodiscard]] const std::string& file() const { return file_; }
+
+    int dim = 2; // known once [case] is read; array lengths depend on it
+
+    // Every key of `t` must be in the schema of table `schema`; `path` is its display path.
+    void check_keys(const toml::table& t, const std::string& path,
+                    const std::string& schema) const {
+        const auto& allowed = kSchema.at(schema);
+        for (const auto& [k, v] : t)
+            if (std::find(allowed.begin(), allowed.end(), k.str()) == allowed.end())
+                fail(join_key(path, k.str()), unknown_key_reason(k.str(), schema, allowed), &v);
+    }
+
+    [[nodiscard]] double as_number(const toml::node& n, const std::string& key) const {
+        double v = 0;
+        if (const auto* i = n.as_integer())
+            v = static_cast<double>(i->get());
+        else if (const auto* f = n.as_floating_point())
+            v = f->get();
+        else
+            fail(key, "expected a number, got " + type_name(n), &n);
+        if (!std::isfinite(v))
+            fail(key, fmt::format("must be a finite number, got {}", v), &n);
+        return v;
+    }
+
+    // An array of exactly `dim` numbers; the unused third component stays 0 in 2-D.
+    [[nodiscard]] Triple as_triple(const toml::node& n, const std::string& key) const {
+        const auto* arr = n.as_array();
+        if (arr == nullptr)
+            fail(key, fmt::format("expected an array of {} numbers, got {}", dim, type_name(n)),
+                 &n);
+        if (arr->size() != static_cast<std::size_t>(dim))
+            fail(key,
+                 fmt::format("expected exactly {} numbers for a {}-D case ({}), got {}", dim, dim,
+                             dim == 2 ? "x, y" : "x, y, z", arr->size()),
+                 &n);
+        Triple out{0, 0, 0};
+        for (std::size_t a = 0; a < arr->size(); ++a)
+            out[a] = as_number((*arr)[a], fmt::format("{}[{}]", key, a));
+        return out;
+    }
+
+private:
+    std::string file_;
+    std::set<std::string, std::less<>> overridden_;
+};
+
+const toml::table& empty_table() {
+    static const toml::table t;
+    return t;
+}
+
+// One table of the file with its display path ("blocks[1]"), for concise typed look-ups.
+// Optional getters return nullopt when the key is absent; type errors throw.
+class Section {
+public:
+    Section(const Reader& r, const toml::table& t, std::string path)
+        : r_(r), t_(t), path_(std::move(path)) {}
+
+    [[nodiscard]] std::string key(std::string_view k) const { return join_key(path_, k); }
+    [[nodiscard]] const toml::node* node(std::string_view k) const { return t_.get(k); }
+    [[nodiscard]] const toml::table& table() const { return t_; }
+    [[nodiscard]] const Reader& reader() const { return r_; }
+
+    [[noreturn]] void fail(std::string_view k, const std::string& reason) const {
+        r_.fail(key(k), reason, node(k));
+    }
+    void require(bool ok, std::string_view k, const std::string& reason) const {
+        if (!ok)
+            fail(k, reason);
+    }
+
+    [[nodiscard]] std::optional<double> number(std::string_view k) const {
+        const auto* n = node(k);
+        if (n == nullptr)
+            return std::nullopt;
+        return r_.as_number(*n, key(k));
+    }
+    [[nodiscard]] double number(std::string_view k, double def) const {
+        return number(k).value_or(def);
+    }
+    [[nodiscard]] double required_number(std::string_view k, std::string_view what) const {
+        auto v = number(k);
+        if (!v)
+            missing(k, what);
+        return *v;
+    }
+
+    [[nodiscard]] std::optional<std::int64_t> integer(std::string_view k) const {
+        const auto* n = node(k);
+        if (n == nullptr)
+            return std::nullopt;
+        const auto* i = n->as_integer();
+        if (i == nullptr)
+            fail(k, "expected an integer, got " + type_name(*n));
+        return i->get();
+    }
+
+    [[nodiscard]] std::optional<bool> boolean(std::string_view k) const {
+        const auto* n = node(k);
+        if (n == nullptr)
+            return std::nullopt;
+        const auto* b = n->as_boolean();
+        if (b == nullptr)
+            fail(k, "expected true or false, got " + type_name(*n));
+        return b->get();
+    }
+
+    [[nodiscard]] std::optional<std::string> string(std::string_view k) const {
+        const auto* n = node(k);
+        if (n == nullptr)
+            return std::nullopt;
+        const auto* s = n->as_string();
+        if (s == nullptr)
+            fail(k, "expected a string, got " + type_name(*n));
+        return s->get();
+    }
+
+    [[nodiscard]] std::optional<Triple> triple(std::string_view k) const {
+        const auto* n = node(k);
+        if (n == nullptr)
+            return std::nullopt;
+        return r_.as_triple(*n, key(k));
+    }
+    [[nodiscard]] Triple required_triple(std::string_view k, std::string_view what) const {
+        auto v = triple(k);
+        if (!v)
+            missing(k, what);
+        return *v;
+    }
+
+    [[nodiscard]] std::optional<std::vector<std::string>> strings(std::string_view k) const {
+        const auto* n = node(k);
+        if (n == nullptr)
+            return std::nullopt;
+        const auto* arr = n->as_array();
+        if (arr == nullptr)
+            fail(k, "expected an array of strings, got " + type_name(*n));
+        std::vector<std::string> out;
+        for (std::size_t i = 0; i < arr->size(); ++i) {
+            const auto* s = (*arr)[i].as_string();
+            if (s == nullptr)
+                r_.fail(fmt::format("{}[{}]", key(k), i),
+                        "expected a string, got " + type_name((*arr)[i]), n);
+            out.push_back(s->get());
+        }
+        return out;
+    }
+
+    // A string that must be one of `options`; the message lists them.
+    template <class E>
+    [[nodiscard]] E choice(std::string_view k, E def,
+                           const std::vector<std::pair<std::string, E>>& options) const {
+        std::vector<std::string> names;
+        for (const auto& o : options)
+            names.push_back('"' + o.first + '"');
+        const auto* n = node(k);
+        if (n == nullptr)
+            return def;
+        if (!n->is_string())
+            fail(k, fmt::format("expected a string, got {}; allowed: {}", type_name(*n),
+                                join_list(names)));
+        const std::string s = n->as_string()->get();
+        for (const auto& [name, value] : options)
+            if (s == name)
+                return value;
+        fail(k, fmt::format("unknown value \"{}\"; allowed: {}", s, join_list(names)));
+    }
+
+    // Sub-table; an absent one reads as empty so that defaults and "missing key" apply.
+    [[nodiscard]] Section sub(std::string_view k) const {
+        const auto* n = node(k);
+        if (n == nullptr)
+            return {r_, empty_table(), key(k)};
+        const auto* t = n->as_table();
+        if (t == nullptr)
+            fail(k, fmt::format("expected a table [{}], got {}", key(k), type_name(*n)));
+        r_.check_keys(*t, key(k), schema_of(key(k)));
+        return {r_, *t, key(k)};
+    }
+
+    // Entries of an array of tables ([[k]]), each with its keys checked.
+    [[nodiscard]] std::vector<Section> entries(std::string_view k) const {
+        std::vector<Section> out;
+        const auto* n = node(k);
+        if (n == nullptr)
+            return out;
+        const auto* arr = n->as_array();
+        const std::string schema = schema_of(key(k));
+        if (arr == nullptr)
+            fail(k,
+                 fmt::format("expected an array of tables [[{}]], got {}", key(k), type_name(*n)));
+        for (std::size_t i = 0; i < arr->size(); ++i) {
+            const std::string path = fmt::format("{}[{}]", key(k), i);
+            const auto* t = (*arr)[i].as_table();
+            if (t == nullptr)
+                r_.fail(
+                    path,
+                    fmt::format("expected a table in [[{}]], got {}", key(k), type_name((*arr)[i])),
+                    n);
+            r_.check_keys(*t, path, schema);
+            out.emplace_back(r_, *t, path);
+        }
+        return out;
+    }
+
+private:
+    [[noreturn]] void missing(std::string_view k, std::string_view what) const {
+        r_.fail(key(k), fmt::format("missing required key ({})", what), nullptr);
+    }
+    // "blocks[2]" -> "blocks": indices are not part of the schema.
+    static std::string schema_of(const std::string& path) {
+        std::string out;
+        for (std::size_t i = 0; i < path.size(); ++i) {
+            if (path[i] == '[') {
+                i = path.find(']', i);
+                if (i == std::string::npos)
+                    break;
+                continue;
+            }
+            out += path[i];
+        }
+        return out;
+    }
+
+    const Reader& r_;
+    const toml::table& t_;
+    std::string path_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Parsing and overrides
+
+toml::table parse_case_file(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw CaseError(path, "", "is a directory, not a case file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw CaseError(path, "",
+                        fmt::format("cannot read the case file ({})", std::strerror(errno)));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        throw CaseError(path, "", "cannot read the case file (I/O error)");
+    try {
+        const std::string doc = text.str();
+        return toml::parse(std::string_view(doc), std::string_view(path));
+    } catch (const toml::parse_error& e) {
+        throw CaseError(path, "",
+                        fmt::format("TOML syntax error at line {}, column {}: {}",
+                                    e.source().begin.line, e.source().begin.column,
+                                    e.description()));
+    }
+}
+
+std::string trim(std::string_view s) {
+    const auto b = s.find_first_not_of(" \t");
+    if (b == std::string_view::npos)
+        return {};
+    const auto e = s.find_last_not_of(" \t");
+    return std::string(s.substr(b, e - b + 1));
+}
+
+// "blocks[0].lo" -> {"blocks", "0", "lo"}.
+std::vector<std::string> split_key(std::string key) {
+    for (auto& ch : key)
+        if (ch == '[' || ch == ']')
+            ch = '.';
+    std::vector<std::string> parts;
+    std::string cur;
+    for (char ch : key) {
+        if (ch == '.') {
+            if (!cur.empty())
+                parts.push_back(cur);
+            cur.clear();
+        } else {
+            cur += ch;
+        }
+    }
+    if (!cur.empty())
+        parts.push_back(cur);
+    return parts;
+}
+
+std::optional<std::size_t> parse_index(const std::string& s) {
+    if (s.empty() || s.size() > 9 || !std::all_of(s.begin(), s.end(), [](char ch) {
+            return std::isdigit(static_cast<unsigned char>(ch)) != 0;
+        }))
+        return std::nullopt;
+    return static_cast<std::size_t>(std::stoul(s));
+}
+
+// Stores `value` (TOML text, or a bare string) at `key` in `root`, after checking the key
+// against the schema. Missing tables on the way are created; array entries must exist.
+void apply_override(toml::table& root, const std::string& text, Reader& r) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos)
+        r.fail(trim(text), fmt::format("--set \"{}\" must look like key=value", text));
+    const std::string raw_key = trim(std::string_view(text).substr(0, eq));
+    const std::string value = trim(std::string_view(text).substr(eq + 1));
+    const auto parts = split_key(raw_key);
+    if (parts.empty())
+        r.fail(raw_key, fmt::format("--set \"{}\" has no key", text));
+
+    toml::table* cur = &root;
+    std::string schema;  // path without indices
+    std::string display; // path with indices, as messages print it
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const std::string& part = parts[i];
+        const auto& allowed = kSchema.at(schema);
+        const std::string shown = join_key(display, part);
+        if (std::find(allowed.begin(), allowed.end(), part) == allowed.end())
+            r.fail(shown, unknown_key_reason(part, schema, allowed) + " (given with --set)");
+        const std::string child = join_key(schema, part);
+        const bool last = i + 1 == parts.size();
+
+        if (kSchema.count(child) == 0) { // a value key
+            if (!last)
+                r.fail(join_key(shown, parts[i + 1]),
+                       fmt::format("unknown key: '{}' is a value, not a table (given with --set)",
+                                   shown));
+            // TOML first ("0.1", "[0, 1]", "true", "\"s\""); anything else is a bare string.
+            std::optional<toml::table> parsed;
+            try {
+                const std::string doc = "v = " + value;
+                parsed = toml::parse(std::string_view(doc), std::string_view("--set"));
+            } catch (const toml::parse_error&) {
+            }
+            if (parsed && parsed->size() == 1 && parsed->contains("v"))
+                parsed->get("v")->visit([&](auto&& node) { cur->insert_or_assign(part, node); });
+            else
+                cur->insert_or_assign(part, value);
+            r.mark_overridden(shown);
+            return;
+        }
+
+        if (last)
+            r.fail(shown, "--set must name a single value, not a whole table (e.g. " +
+                              join_key(shown, kSchema.at(child).front()) + "=...)");
+        schema = child;
+        toml::node* n = cur->get(part);
+        if (kArrayTables.count(child) != 0) {
+            const auto idx = parse_index(parts[i + 1]);
+            if (!idx)
+                r.fail(shown, fmt::format("[[{}]] entries are chosen by index, e.g. {}.0.{}", child,
+                                          shown, kSchema.at(child).front()) +
+                                  " (given with --set)");
+            toml::array* arr = n != nullptr ? n->as_array() : nullptr;
+            const std::size_t have = arr != nullptr ? arr->size() : 0;
+            if (*idx >= have || !(*arr)[*idx].is_table())
+                r.fail(
+                    fmt::format("{}[{}]", shown, *idx),
+                    fmt::format("no such entry: the file has {} [[{}]] entr{} (given with --set)",
+                                have, child, have == 1 ? "y" : "ies"));
+            cur = (*arr)[*idx].as_table();
+            display = fmt::format("{}[{}]", shown, *idx);
+            ++i; // the index is consumed
+        } else {
+            if (n == nullptr)
+                n = &cur->insert_or_assign(part, toml::table{}).first->second;
+            if (!n->is_table())
+                r.fail(shown, fmt::format("expected a table [{}], got {}", shown, type_name(*n)),
+                       n);
+            cur = n->as_table();
+            display = shown;
+        }
+    }
+    r.fail(raw_key, "--set must name a value, not a whole table");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sections of the case, in file order
+
+const std::vector<std::pair<std::string, KernelType>> kKernels = {
+    {"quintic", KernelType::quintic},
+    {"wendland_c2", KernelType::wendland_c2},
+    {"cubic_spline", KernelType::cubic_spline}};
+const std::vector<std::pair<std::string, DensityScheme>> kDensity = {
+    {"summation", DensityScheme::summation}, {"continuity", DensityScheme::continuity}};
+const std::vector<std::pair<std::string, EosType>> kEos = {{"linear", EosType::linear},
+                                                           {"tait", EosType::tait}};
+const std::vector<std::pair<std::string, WallModel>> kWalls = {
+    {"none", WallModel::none}, {"reflective", WallModel::reflective}, {"dummy", WallModel::dummy}};
+const std::vector<std::pair<std::string, VelocityProfile>> kProfiles = {
+    {"uniform", VelocityProfile::uniform}, {"taylor_green", VelocityProfile::taylor_green}};
+const std::vector<std::pair<std::string, ProbeType>> kProbeTypes = {
+    {"pressure", ProbeType::pressure},
+    {"water_level", ProbeType::water_level},
+    {"surge_front", ProbeType::surge_front}};
+
+// Tolerance for "inside" tests, relative to the domain size: lattice edges computed by the
+// user (0.1 + 0.2) must not be refused for a rounding error.
+double slack(const CaseConfig& c) {
+    double size = 0;
+    for (int a = 0; a < c.dimension; ++a)
+        size = std::max(size, c.domain_hi[static_cast<std::size_t>(a)] -
+                                  c.domain_lo[static_cast<std::size_t>(a)]);
+    return 1e-9 * size;
+}
+
+void read_case_table(const Section& s, CaseConfig& c, Reader& r, const std::string& path) {
+    const auto d = s.integer("dimension");
+    if (!d)
+        s.reader().fail(s.key("dimension"), "missing required key (2 or 3)");
+    s.require(*d == 2 || *d == 3, "dimension", fmt::format("must be 2 or 3, got {}", *d));
+    c.dimension = static_cast<int>(*d);
+    r.dim = c.dimension;
+
+    c.name = s.string("name").value_or(std::filesystem::path(path).stem().string());
+    // The name becomes the default results folder results/<name>.
+    const bool bad_name =
+        c.name.empty() || c.name == "." || c.name == ".." ||
+        std::any_of(c.name.begin(), c.name.end(), [](char ch) {
+            return ch == '/' || ch == '\\' || std::iscntrl(static_cast<unsigned char>(ch)) != 0;
+        });
+    s.require(!bad_name, "name",
+              fmt::format("\"{}\" cannot be used as a folder name (no '/', '\\', control "
+                          "characters, '.' or '..')",
+                          c.name));
+    c.description = s.string("description").value_or("");
+}
+
+void read_domain(const Section& s, CaseConfig& c) {
+    c.domain_lo = s.required_triple("lo", "lower corner of the domain [m]");
+    c.domain_hi = s.required_triple("hi", "upper corner of the domain [m]");
+    for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a)
+        s.require(c.domain_lo[a] < c.domain_hi[a], "hi",
+                  fmt::format("must be above domain.lo on every axis; on {}: lo = {}, hi = {}",
+                              kAxis[a], c.domain_lo[a], c.domain_hi[a]));
+    if (const auto* n = s.node("periodic")) {
+        const auto* arr = n->as_array();
+        s.require(
+            arr != nullptr && arr->size() == static_cast<std::size_t>(c.dimension), "periodic",
+            fmt::format("expected an array of exactly {} booleans (one per axis)", c.dimension));
+        for (std::size_t a = 0; a < arr->size(); ++a) {
+            const auto* b = (*arr)[a].as_boolean();
+            if (b == nullptr)
+                s.reader().fail(fmt::format("{}[{}]", s.key("periodic"), a),
+                                "expected true or false, got " + type_name((*arr)[a]), n);
+            c.periodic[a] = b->get();
+        }
+    }
+}
+
+void read_fluid(const Section& s, CaseConfig& c) {
+    c.rho0 = s.required_number("rho0", "reference density [kg/m^3]");
+    s.require(c.rho0 > 0, "rho0", fmt::format("must be > 0, got {}", c.rho0));
+    c.viscosity = s.required_number("viscosity", "dynamic viscosity [Pa s], 0 for inviscid");
+    s.require(c.viscosity >= 0, "viscosity", fmt::format("must be >= 0, got {}", c.viscosity));
+    c.sound_speed = s.required_number("sound_speed", "artificial speed of sound [m/s]");
+    s.require(c.sound_speed > 0, "sound_speed", fmt::format("must be > 0, got {}", c.sound_speed));
+    // Gravity points down the last axis: -y in 2-D, -z in 3-D.
+    c.gravity = c.dimension == 2 ? Triple{0, -9.81, 0} : Triple{0, 0, -9.81};
+    if (auto g = s.triple("gravity"))
+        c.gravity = *g;
+    c.eos = s.choice("eos", EosType::linear, kEos);
+    c.gamma = s.number("gamma", 7);
+    s.require(c.gamma > 0, "gamma", fmt::format("must be > 0, got {}", c.gamma));
+    c.background_pressure = s.number("background_pressure", 0);
+    s.require(c.background_pressure >= 0, "background_pressure",
+              fmt::format("must be >= 0, got {}", c.background_pressure));
+}
+
+void read_blocks(const Section& root, CaseConfig& c) {
+    const auto blocks = root.entries("blocks");
+    if (blocks.empty())
+        root.reader().fail("blocks", "missing required key: at least one [[blocks]] fluid block "
+                                     "is needed");
+    const double eps = slack(c);
+    for (const auto& s : blocks) {
+        FluidBlock b;
+        b.lo = s.required_triple("lo", "lower corner of the block [m]");
+        b.hi = s.required_triple("hi", "upper corner of the block [m]");
+        for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a) {
+            s.require(b.lo[a] < b.hi[a], "hi",
+                      fmt::format("must be above lo on every axis; on {}: lo = {}, hi = {}",
+                                  kAxis[a], b.lo[a], b.hi[a]));
+            s.require(b.lo[a] >= c.domain_lo[a] - eps, "lo",
+                      fmt::format("the block lies outside the domain: {} = {} is below "
+                                  "domain.lo = {}",
+                                  kAxis[a], b.lo[a], c.domain_lo[a]));
+            s.require(b.hi[a] <= c.domain_hi[a] + eps, "hi",
+                      fmt::format("the block lies outside the domain: {} = {} is above "
+                                  "domain.hi = {}",
+                                  kAxis[a], b.hi[a], c.domain_hi[a]));
+        }
+        if (auto v = s.triple("velocity"))
+            b.velocity = *v;
+        b.profile = s.choice("profile", VelocityProfile::uniform, kProfiles);
+        b.amplitude = s.number("amplitude", 0);
+        b.hydrostatic = s.boolean("hydrostatic").value_or(true);
+
+        // Two blocks sharing volume would put two particles on one lattice site.
+        for (std::size_t j = 0; j < c.blocks.size(); ++j) {
+            bool overlap = true;
+            for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a)
+                overlap = overlap && std::min(b.hi[a], c.blocks[j].hi[a]) -
+                                             std::max(b.lo[a], c.blocks[j].lo[a]) >
+                                         eps;
+            s.require(!overlap, "lo", fmt::format("the block overlaps blocks[{}]", j));
+        }
+        c.blocks.push_back(b);
+    }
+}
+
+// The lattice puts round(extent / dx) particles along each axis: a block thinner than dx/2
+// would silently hold none.
+void check_block_thickness(const Section& root, const CaseConfig& c) {
+    for (std::size_t i = 0; i < c.blocks.size(); ++i)
+        for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a) {
+            const double extent = c.blocks[i].hi[a] - c.blocks[i].lo[a];
+            if (std::round(extent / c.dx) < 1)
+                root.reader().fail(fmt::format("blocks[{}].hi", i),
+                                   fmt::format("the block is {} m thick along {}, less than "
+                                               "half of dx = {} m: it would hold no particle",
+                                               extent, kAxis[a], c.dx));
+        }
+}
+
+void read_numerics(const Section& s, CaseConfig& c) {
+    c.kernel = s.choice("kernel", KernelType::quintic, kKernels);
+    c.h_over_dx = s.number("h_over_dx", 1.0);
+    s.require(c.h_over_dx > 0, "h_over_dx", fmt::format("must be > 0, got {}", c.h_over_dx));
+    c.density = s.choice("density", DensityScheme::continuity, kDensity);
+    c.delta_sph = s.number("delta_sph", 0.1);
+    s.require(c.delta_sph >= 0, "delta_sph", fmt::format("must be >= 0, got {}", c.delta_sph));
+    c.artificial_viscosity = s.number("artificial_viscosity", 0);
+    s.require(c.artificial_viscosity >= 0, "artificial_viscosity",
+              fmt::format("must be >= 0, got {}", c.artificial_viscosity));
+    c.shifting = s.number("shifting", 0);
+    s.require(c.shifting >= 0 && c.shifting <= 20, "shifting",
+              fmt::format("must be in [0, 20], got {}", c.shifting));
+    const auto cfl = [&](std::string_view k, double def) {
+        const double v = s.number(k, def);
+        s.require(v > 0 && v <= 1, k, fmt::format("must be in (0, 1], got {}", v));
+        return v;
+    };
+    c.cfl = cfl("cfl", 0.25);
+    c.viscous_cfl = cfl("viscous_cfl", 0.125);
+    c.force_cfl = cfl("force_cfl", 0.25);
+    if (auto dt = s.number("dt")) {
+        s.require(*dt > 0, "dt", fmt::format("a fixed time step must be > 0, got {}", *dt));
+        c.fixed_dt = *dt;
+    }
+}
+
+void read_walls(const Section& s, CaseConfig& c) {
+    c.walls = s.choice("model", WallModel::none, kWalls);
+    const double eps = slack(c);
+    const auto dim = static_cast<std::size_t>(c.dimension);
+    if (c.walls != WallModel::none) {
+        c.tank_lo = s.required_triple("tank_lo", "lower corner of the tank [m]; needed when "
+                                                 "walls.model is not \"none\"");
+        c.tank_hi = s.required_triple("tank_hi", "upper corner of the tank [m]; needed when "
+                                                 "walls.model is not \"none\"");
+        for (std::size_t a = 0; a < dim; ++a) {
+            s.require(c.tank_lo[a] < c.tank_hi[a], "tank_hi",
+                      fmt::format("must be above walls.tank_lo on every axis; on {}: lo = {}, "
+                                  "hi = {}",
+                                  kAxis[a], c.tank_lo[a], c.tank_hi[a]));
+            s.require(c.tank_lo[a] >= c.domain_lo[a] - eps, "tank_lo",
+                      fmt::format("the tank lies outside the domain: {} = {} is below "
+                                  "domain.lo = {}",
+                                  kAxis[a], c.tank_lo[a], c.domain_lo[a]));
+            s.require(c.tank_hi[a] <= c.domain_hi[a] + eps, "tank_hi",
+                      fmt::format("the tank lies outside the domain: {} = {} is above "
+                                  "domain.hi = {}",
+                                  kAxis[a], c.tank_hi[a], c.domain_hi[a]));
+        }
+        std::vector<std::string> all = {"x-", "x+", "y-", "y+"};
+        if (c.dimension == 3)
+            all.insert(all.end(), {"z-", "z+"});
+        c.tank_faces = s.strings("tank_faces").value_or(all);
+        std::set<std::string> seen;
+        for (const auto& f : c.tank_faces) {
+            s.require(std::find(all.begin(), all.end(), f) != all.end(), "tank_faces",
+                      fmt::format("unknown face \"{}\"; allowed in {}-D: {}", f, c.dimension,
+                                  join_list(all)));
+            s.require(seen.insert(f).second, "tank_faces",
+                      fmt::format("face \"{}\" is listed twice", f));
+            const auto a = static_cast<std::size_t>(f[0] - 'x');
+            s.require(
+                !c.periodic[a], "tank_faces",
+                fmt::format("face \"{}\" carries a wall but the {} axis is periodic", f, kAxis[a]));
+        }
+    } else {
+        // Without walls there is no tank; keys given anyway are still checked for type.
+        (void)s.triple("tank_lo");
+        (void)s.triple("tank_hi");
+        (void)s.strings("tank_faces");
+    }
+    c.restitution = s.number("restitution", 1.0);
+    s.require(c.restitution >= 0 && c.restitution <= 1, "restitution",
+              fmt::format("must be in [0, 1], got {}", c.restitution));
+    c.no_slip = s.boolean("no_slip").value_or(true);
+
+    for (const auto& p : s.entries("planes")) {
+        WallPlane w;
+        w.point = p.required_triple("point", "a point on the plane [m]");
+        w.normal = p.required_triple("normal", "normal pointing into the fluid side");
+        double len2 = 0;
+        for (double x : w.normal)
+            len2 += x * x;
+        p.require(len2 > 0, "normal", "must not be the zero vector");
+        // Stored as a unit vector so the solver can use it for distances directly.
+        const double len = std::sqrt(len2);
+        for (double& x : w.normal)
+            x /= len;
+        c.planes.push_back(w);
+    }
+}
+
+// Fluid must start on the inner side of every wall-carrying tank face.
+void check_blocks_in_tank(const Section& root, const CaseConfig& c) {
+    if (c.walls == WallModel::none)
+        return;
+    const double eps = slack(c);
+    for (std::size_t i = 0; i < c.blocks.size(); ++i) {
+        const auto& b = c.blocks[i];
+        for (const auto& f : c.tank_faces) {
+            const auto a = static_cast<std::size_t>(f[0] - 'x');
+            const bool low = f[1] == '-';
+            const bool inside = low ? b.lo[a] >= c.tank_lo[a] - eps : b.hi[a] <= c.tank_hi[a] + eps;
+            if (!inside)
+                root.reader().fail(
+                    fmt::format("blocks[{}].{}", i, low ? "lo" : "hi"),
+                    fmt::format("the block extends beyond the tank wall \"{}\" at {} = {}", f,
+                                kAxis[a], low ? c.tank_lo[a] : c.tank_hi[a]));
+        }
+    }
+}
+
+void read_time(const Section& s, CaseConfig& c) {
+    c.end_time = s.required_number("end_time", "simulated time to reach [s]");
+    s.require(c.end_time > 0, "end_time", fmt::format("must be > 0, got {}", c.end_time));
+    c.output_interval = s.number("output_interval", 0);
+    s.require(c.output_interval >= 0, "output_interval",
+              fmt::format("must be >= 0 (0 = only the final state), got {}", c.output_interval));
+}
+
+void read_output(const Section& s, CaseConfig& c) {
+    c.snapshots = s.boolean("snapshots").value_or(true);
+    if (auto f = s.strings("fields")) {
+        std::set<std::string> seen;
+        for (const auto& name : *f) {
+            s.require(
+                std::find(kFieldNames.begin(), kFieldNames.end(), name) != kFieldNames.end(),
+                "fields",
+                fmt::format("unknown field \"{}\"; allowed: {}", name, join_list(kFieldNames)));
+            s.require(seen.insert(name).second, "fields",
+                      fmt::format("field \"{}\" is listed twice", name));
+        }
+        c.fields = *f;
+    }
+}
+
+bool inside_domain(const CaseConfig& c, const Triple& p) {
+    const double eps = slack(c);
+    for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a)
+        if (p[a] < c.domain_lo[a] - eps || p[a] > c.domain_hi[a] + eps)
+            return false;
+    return true;
+}
+
+void read_probes(const Section& root, CaseConfig& c) {
+    std::set<std::string> names;
+    for (const auto& s : root.entries("probes")) {
+        ProbeConfig p;
+        const auto name = s.string("name");
+        if (!name)
+            s.reader().fail(s.key("name"), "missing required key (becomes probes/<name>.csv)");
+        p.name = *name;
+        // Names become file names: keep them portable and unsurprising.
+        const bool ok = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char ch) {
+            return std::isalnum(static_cast<unsigned char>(ch)) != 0 || ch == '_' || ch == '-';
+        });
+        s.require(ok, "name",
+                  fmt::format("\"{}\" is not a valid probe name (letters, digits, '_' and '-' "
+                              "only; it becomes a file name)",
+                              p.name));
+        s.require(names.insert(p.name).second, "name",
+                  fmt::format("another probe is already called \"{}\"", p.name));
+
+        if (s.node("type") == nullptr)
+            s.reader().fail(s.key("type"), "missing required key (\"pressure\", \"water_level\" or "
+                                           "\"surge_front\")");
+        p.type = s.choice("type", ProbeType::pressure, kProbeTypes);
+        const bool wants_position = p.type == ProbeType::pressure;
+        const bool wants_x = p.type == ProbeType::water_level;
+        const char* type_word = p.type == ProbeType::pressure      ? "pressure"
+                                : p.type == ProbeType::water_level ? "water_level"
+                                                                   : "surge_front";
+        if (wants_position) {
+            p.position = s.required_triple("position", "point where pressure is sampled [m]");
+            s.require(inside_domain(c, p.position), "position",
+                      "the probe lies outside the domain");
+        } else {
+            s.require(s.node("position") == nullptr, "position",
+                      fmt::format("does not apply to a {} probe", type_word));
+        }
+        if (wants_x) {
+            p.x = s.required_number("x", "x position of the water-level gauge [m]");
+            s.require(p.x >= c.domain_lo[0] - slack(c) && p.x <= c.domain_hi[0] + slack(c), "x",
+                      fmt::format("the probe lies outside the domain: x = {} is not in [{}, {}]",
+                                  p.x, c.domain_lo[0], c.domain_hi[0]));
+        } else {
+            s.require(s.node("x") == nullptr, "x",
+                      fmt::format("does not apply to a {} probe", type_word));
+        }
+        p.interval = s.number("interval", 0);
+        s.require(p.interval >= 0, "interval",
+                  fmt::format("must be >= 0 (0 = every output interval), got {}", p.interval));
+        c.probes.push_back(p);
+    }
+}
+
+void read_runtime(const Section& s, CaseConfig& c) {
+    const auto n = s.integer("particles_per_group").value_or(2000);
+    s.require(n >= 1 && n <= std::numeric_limits<int>::max(), "particles_per_group",
+              fmt::format("must be between 1 and {}, got {}", std::numeric_limits<int>::max(), n));
+    c.particles_per_group = static_cast<int>(n);
+}
+
+// Lattice sites of all blocks; refuses cases that would not fit any sensible machine.
+void check_particle_count(const Section& root, const CaseConfig& c) {
+    double total = 0;
+    for (const auto& b : c.blocks) {
+        double n = 1;
+        for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a)
+            n *= std::max(1.0, std::round((b.hi[a] - b.lo[a]) / c.dx));
+        total += n;
+    }
+    if (total > max_case_particles)
+        root.reader().fail("particles.dx",
+                           fmt::format("the fluid blocks would hold about {:.3g} particles "
+                                       "(volume / dx^{}), above the limit of {:.0f} million; "
+                                       "increase dx",
+                                       total, c.dimension, max_case_particles / 1e6),
+                           root.sub("particles").node("dx"));
+}
+
+CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
+    CaseConfig c;
+    c.source_file = path;
+    r.check_keys(root, "", "");
+    const Section top(r, root, "");
+
+    read_case_table(top.sub("case"), c, r, path);
+    read_domain(top.sub("domain"), c);
+    read_fluid(top.sub("fluid"), c);
+
+    const Section particles = top.sub("particles");
+    c.dx = particles.required_number("dx", "lattice spacing [m]");
+    particles.require(c.dx > 0, "dx", fmt::format("must be > 0, got {}", c.dx));
+
+    read_blocks(top, c);
+    check_block_thickness(top, c);
+    read_numerics(top.sub("numerics"), c);
+    read_walls(top.sub("walls"), c);
+    check_blocks_in_tank(top, c);
+    read_time(top.sub("time"), c);
+    read_output(top.sub("output"), c);
+    read_probes(top, c);
+    read_runtime(top.sub("runtime"), c);
+    check_particle_count(top, c);
+    return c;
+}
+
+} // namespace
+
+CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides) {
+    Reader r(path);
+    toml::table root = parse_case_file(path);
+    for (const auto& o : overrides)
+        apply_override(root, o, r);
+    return build(root, r, path);
+}
+
+} // namespace sluice

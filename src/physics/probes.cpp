@@ -1,0 +1,218 @@
+// Bulk detection (cell hash + union-find) and the probes built on it.
+#include "sluice/physics/probes.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+
+namespace sluice {
+namespace {
+
+// Disjoint sets with union by size and path halving: near-constant time per operation.
+class UnionFind {
+public:
+    explicit UnionFind(std::size_t n) : parent_(n), size_(n, 1) {
+        for (std::size_t i = 0; i < n; ++i)
+            parent_[i] = i;
+    }
+    std::size_t find(std::size_t i) {
+        while (parent_[i] != i) {
+            parent_[i] = parent_[parent_[i]];
+            i = parent_[i];
+        }
+        return i;
+    }
+    void unite(std::size_t a, std::size_t b) {
+        a = find(a);
+        b = find(b);
+        if (a == b)
+            return;
+        if (size_[a] < size_[b])
+            std::swap(a, b);
+        parent_[b] = a;
+        size_[a] += size_[b];
+    }
+
+private:
+    std::vector<std::size_t> parent_, size_;
+};
+
+template <int D>
+using CellKey = std::array<std::int64_t, D>;
+
+template <int D>
+struct CellHash {
+    std::size_t operator()(const CellKey<D>& k) const {
+        std::uint64_t h = 1469598103934665603ULL;
+        for (auto c : k)
+            h = (h ^ static_cast<std::uint64_t>(c)) * 1099511628211ULL;
+        return static_cast<std::size_t>(h);
+    }
+};
+
+// Integer cell of a position; nullopt-like `false` for positions no cell can hold (NaN, or
+// so far away that the index would overflow): such a particle stays a component of its own.
+template <int D>
+bool cell_of(const Vec<D>& x, Real inv_size, CellKey<D>& out) {
+    for (int a = 0; a < D; ++a) {
+        const Real c = std::floor(x[a] * inv_size);
+        if (!(std::abs(c) < 1e15))
+            return false;
+        out[static_cast<std::size_t>(a)] = static_cast<std::int64_t>(c);
+    }
+    return true;
+}
+
+// The 3^D offsets to a cell and its neighbours (including the cell itself).
+template <int D>
+std::vector<CellKey<D>> neighbour_offsets() {
+    std::vector<CellKey<D>> out;
+    const int total = D == 2 ? 9 : 27;
+    for (int code = 0; code < total; ++code) {
+        CellKey<D> o{};
+        int rest = code;
+        for (std::size_t a = 0; a < static_cast<std::size_t>(D); ++a) {
+            o[a] = rest % 3 - 1;
+            rest /= 3;
+        }
+        out.push_back(o);
+    }
+    return out;
+}
+
+} // namespace
+
+template <int D>
+std::vector<std::size_t> bulk_fluid(const Particles<D>& ps, Real dx) {
+    std::vector<std::size_t> fluid;
+    for (std::size_t i = 0; i < ps.size(); ++i)
+        if (ps.kind[i] == Kind::fluid)
+            fluid.push_back(i);
+    const std::size_t n = fluid.size();
+    if (n == 0)
+        return {};
+
+    const Real link = 1.5 * dx;
+    const Real link2 = link * link;
+
+    // Bucket particles by cell (cell size = link distance, so linked pairs are in adjacent
+    // cells): counting sort into a compact layout, O(N).
+    std::unordered_map<CellKey<D>, std::size_t, CellHash<D>> cell_index;
+    cell_index.reserve(n);
+    std::vector<std::size_t> cell_of_particle(n, SIZE_MAX);
+    std::vector<std::size_t> count;
+    for (std::size_t k = 0; k < n; ++k) {
+        CellKey<D> key;
+        if (!cell_of<D>(ps.x[fluid[k]], 1 / link, key))
+            continue;
+        const auto [it, added] = cell_index.try_emplace(key, count.size());
+        if (added)
+            count.push_back(0);
+        cell_of_particle[k] = it->second;
+        ++count[it->second];
+    }
+    std::vector<std::size_t> start(count.size() + 1, 0);
+    for (std::size_t c = 0; c < count.size(); ++c)
+        start[c + 1] = start[c] + count[c];
+    std::vector<std::size_t> members(start.back());
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < n; ++k)
+        if (cell_of_particle[k] != SIZE_MAX)
+            members[fill[cell_of_particle[k]]++] = k;
+
+    UnionFind uf(n);
+    const auto offsets = neighbour_offsets<D>();
+    for (const auto& [key, c] : cell_index) {
+        for (const auto& off : offsets) {
+            CellKey<D> nk;
+            for (std::size_t a = 0; a < static_cast<std::size_t>(D); ++a)
+                nk[a] = key[a] + off[a];
+            const auto nb = cell_index.find(nk);
+            if (nb == cell_index.end() || nb->second < c)
+                continue; // each cell pair once
+            const std::size_t other = nb->second;
+            for (std::size_t s = start[c]; s < start[c + 1]; ++s) {
+                const std::size_t k = members[s];
+                // Within one cell, each pair once as well.
+                for (std::size_t t = other == c ? s + 1 : start[other]; t < start[other + 1]; ++t) {
+                    const std::size_t m = members[t];
+                    if ((ps.x[fluid[k]] - ps.x[fluid[m]]).squaredNorm() <= link2)
+                        uf.unite(k, m);
+                }
+            }
+        }
+    }
+
+    // Largest component; ties go to the one with the smallest id, independent of ordering.
+    std::vector<std::size_t> size(n, 0);
+    std::vector<ParticleId> min_id(n, std::numeric_limits<ParticleId>::max());
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t r = uf.find(k);
+        ++size[r];
+        min_id[r] = std::min(min_id[r], ps.id[fluid[k]]);
+    }
+    std::size_t best = uf.find(0);
+    for (std::size_t r = 0; r < n; ++r)
+        if (size[r] > size[best] ||
+            (size[r] == size[best] && size[r] > 0 && min_id[r] < min_id[best]))
+            best = r;
+
+    std::vector<std::size_t> bulk;
+    bulk.reserve(size[best]);
+    for (std::size_t k = 0; k < n; ++k)
+        if (uf.find(k) == best)
+            bulk.push_back(fluid[k]);
+    return bulk;
+}
+
+template <int D>
+Real water_level(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx, Real x) {
+    bool wet = false;
+    Real top = -std::numeric_limits<Real>::infinity();
+    for (std::size_t i : bulk) {
+        if (std::abs(ps.x[i][0] - x) > dx)
+            continue;
+        top = std::max(top, ps.x[i][D - 1]);
+        wet = true;
+    }
+    return wet ? top + dx / 2 : std::numeric_limits<Real>::quiet_NaN();
+}
+
+template <int D>
+Real water_level(const Particles<D>& ps, Real dx, Real x) {
+    return water_level(ps, bulk_fluid(ps, dx), dx, x);
+}
+
+template <int D>
+Real surge_front(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx) {
+    if (bulk.empty())
+        return std::numeric_limits<Real>::quiet_NaN();
+    Real front = -std::numeric_limits<Real>::infinity();
+    for (std::size_t i : bulk)
+        front = std::max(front, ps.x[i][0]);
+    return front + dx / 2;
+}
+
+template <int D>
+Real surge_front(const Particles<D>& ps, Real dx) {
+    return surge_front(ps, bulk_fluid(ps, dx), dx);
+}
+
+template std::vector<std::size_t> bulk_fluid<2>(const Particles<2>&, Real);
+template std::vector<std::size_t> bulk_fluid<3>(const Particles<3>&, Real);
+template Real water_level<2>(const Particles<2>&, Real, Real);
+template Real water_level<3>(const Particles<3>&, Real, Real);
+template Real water_level<2>(const Particles<2>&, const std::vector<std::size_t>&, Real, Real);
+template Real water_level<3>(const Particles<3>&, const std::vector<std::size_t>&, Real, Real);
+template Real surge_front<2>(const Particles<2>&, Real);
+template Real surge_front<3>(const Particles<3>&, Real);
+template Real surge_front<2>(const Particles<2>&, const std::vector<std::size_t>&, Real);
+template Real surge_front<3>(const Particles<3>&, const std::vector<std::size_t>&, Real);
+template Real pressure_probe<2, AnyKernel<2>>(const Particles<2>&, const AnyKernel<2>&,
+                                              const Vec<2>&);
+template Real pressure_probe<3, AnyKernel<3>>(const Particles<3>&, const AnyKernel<3>&,
+                                              const Vec<3>&);
+
+} // namespace sluice

@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# Broken case files are refused with exit code 2, a message naming the file and the key, and no
+# results folder. Usage: bad_input.sh <sluice executable> <source dir>
+set -u
+
+exe=$(realpath "$1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+failures=0
+
+fail() {
+    echo "FAIL: $*"
+    failures=$((failures + 1))
+}
+
+cat >valid.toml <<'EOF'
+[case]
+name = "valid"
+dimension = 2
+
+[domain]
+lo = [0, 0]
+hi = [2, 1]
+
+[fluid]
+rho0 = 1000
+viscosity = 0
+sound_speed = 20
+
+[particles]
+dx = 0.02
+
+[[blocks]]
+lo = [0, 0]
+hi = [0.5, 0.5]
+
+[numerics]
+h_over_dx = 1.3
+
+[time]
+end_time = 0.4
+EOF
+
+# make_case NAME SED-EXPRESSION: a copy of valid.toml with one edit.
+make_case() {
+    sed "$2" valid.toml >"$1.toml"
+}
+
+# expect_refused NAME EXPECTED-KEY-TEXT [sluice args...]
+expect_refused() {
+    local name=$1 key=$2
+    shift 2
+    "$exe" run "$name.toml" "$@" >out.txt 2>err.txt
+    local rc=$?
+    [ "$rc" -eq 2 ] || fail "$name: exit code $rc, expected 2 ($(cat err.txt))"
+    grep -q "$name.toml" err.txt || fail "$name: stderr does not name the file: $(cat err.txt)"
+    grep -q -- "$key" err.txt || fail "$name: stderr does not name '$key': $(cat err.txt)"
+    grep -q "^sluice: error: " err.txt || fail "$name: no 'sluice: error:' prefix: $(cat err.txt)"
+    [ ! -e results ] || fail "$name: a results folder was created"
+    rm -rf results
+}
+
+make_case syntax 's/^rho0 = 1000$/rho0 = = 1000/'
+expect_refused syntax "line 10"
+
+make_case unknown_key 's/^h_over_dx = 1.3$/h_over_dxx = 1.3/'
+expect_refused unknown_key "numerics.h_over_dxx"
+
+make_case wrong_type 's/^rho0 = 1000$/rho0 = "heavy"/'
+expect_refused wrong_type "fluid.rho0"
+
+make_case missing_key '/^sound_speed = 20$/d'
+expect_refused missing_key "fluid.sound_speed"
+
+make_case bad_h 's/^h_over_dx = 1.3$/h_over_dx = 0/'
+expect_refused bad_h "numerics.h_over_dx"
+
+make_case negative_rho 's/^rho0 = 1000$/rho0 = -1000/'
+expect_refused negative_rho "fluid.rho0"
+
+make_case block_outside 's/^hi = \[0.5, 0.5\]$/hi = [0.5, 1.5]/'
+expect_refused block_outside "blocks\[0\].hi"
+
+make_case end_time 's/^end_time = 0.4$/end_time = 0/'
+expect_refused end_time "time.end_time"
+
+# A bad override is refused the same way.
+cp valid.toml override.toml
+expect_refused override "numerics.kernal" --set numerics.kernal=quintic
+
+# A missing file is a case error too.
+"$exe" run missing.toml >/dev/null 2>err.txt
+rc=$?
+[ "$rc" -eq 2 ] || fail "missing file: exit code $rc, expected 2"
+grep -q "missing.toml" err.txt || fail "missing file: stderr does not name it: $(cat err.txt)"
+[ ! -e results ] || fail "missing file: a results folder was created"
+
+# Command-line usage.
+"$exe" --version >out.txt 2>&1
+rc=$?
+[ "$rc" -eq 0 ] || fail "--version: exit code $rc"
+grep -q "^sluice " out.txt || fail "--version prints: $(cat out.txt)"
+
+"$exe" run >/dev/null 2>&1
+rc=$?
+[ "$rc" -eq 2 ] || fail "run without a case file: exit code $rc, expected 2"
+
+"$exe" >/dev/null 2>&1
+rc=$?
+[ "$rc" -eq 2 ] || fail "no subcommand: exit code $rc, expected 2"
+
+"$exe" run valid.toml --no-such-option >/dev/null 2>&1
+rc=$?
+[ "$rc" -eq 2 ] || fail "unknown option: exit code $rc, expected 2"
+[ ! -e results ] || fail "unknown option: a results folder was created"
+
+"$exe" --help >/dev/null 2>&1
+rc=$?
+[ "$rc" -eq 0 ] || fail "--help: exit code $rc"
+
+if [ "$failures" -ne 0 ]; then
+    echo "$failures check(s) failed"
+    exit 1
+fi
+echo "all CLI bad-input checks passed"

@@ -1,0 +1,399 @@
+// Case file reader: a valid file gives the expected values; every class of mistake gives a
+// CaseError naming the offending key.
+#include "sluice/io/case_reader.hpp"
+#include "sluice/io/errors.hpp"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+using namespace sluice;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh directory per test binary run, removed at exit.
+const fs::path& temp_dir() {
+    static const struct Dir {
+        fs::path path;
+        Dir() {
+            path = fs::temp_directory_path() / ("sluice_case_reader_" + std::to_string(::getpid()));
+            fs::create_directories(path);
+        }
+        ~Dir() {
+            std::error_code ec;
+            fs::remove_all(path, ec);
+        }
+    } dir;
+    return dir.path;
+}
+
+std::string write_case(const std::string& name, const std::string& text) {
+    const fs::path p = temp_dir() / (name + ".toml");
+    std::ofstream(p) << text;
+    return p.string();
+}
+
+const std::string kValid2D = R"(
+[case]
+name = "dam"
+description = "a small dam break"
+dimension = 2
+
+[domain]
+lo = [0, 0]
+hi = [4.0, 3.0]
+
+[fluid]
+rho0 = 1000
+viscosity = 1e-3
+sound_speed = 40
+eos = "tait"
+
+[particles]
+dx = 0.02
+
+[[blocks]]
+lo = [0, 0]
+hi = [1, 2]
+
+[[blocks]]
+lo = [2, 0]
+hi = [3, 0.5]
+velocity = [1, 0]
+hydrostatic = false
+
+[numerics]
+kernel = "wendland_c2"
+h_over_dx = 1.3
+cfl = 0.2
+
+[walls]
+model = "dummy"
+tank_lo = [0, 0]
+tank_hi = [4, 3]
+tank_faces = ["x-", "x+", "y-"]
+
+[[walls.planes]]
+point = [3.5, 0]
+normal = [-2, 0]
+
+[time]
+end_time = 1.5
+output_interval = 0.01
+
+[output]
+fields = ["position", "pressure"]
+
+[[probes]]
+name = "P1"
+type = "pressure"
+position = [4.0, 0.1]
+
+[[probes]]
+name = "H_1"
+type = "water_level"
+x = 0.5
+interval = 0.001
+
+[[probes]]
+name = "front"
+type = "surge_front"
+)";
+
+// Replaces the first occurrence of `from` in the valid case by `to`.
+std::string edit(const std::string& from, const std::string& to, std::string text = kValid2D) {
+    const auto pos = text.find(from);
+    REQUIRE_MESSAGE(pos != std::string::npos, "test edit target not found: " << from);
+    text.replace(pos, from.size(), to);
+    return text;
+}
+
+// Reads `text` and expects a CaseError about `key`; returns the reason for further checks.
+std::string expect_error(const std::string& text, const std::string& key,
+                         const std::vector<std::string>& overrides = {}) {
+    const std::string path = write_case("bad", text);
+    try {
+        (void)read_case(path, overrides);
+    } catch (const CaseError& e) {
+        CHECK_MESSAGE(e.key() == key, "message: " << e.what());
+        CHECK(e.file() == path);
+        CHECK(std::string(e.what()).find(path) != std::string::npos);
+        return e.reason();
+    }
+    FAIL("no CaseError for key " << key);
+    return {};
+}
+
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
+
+} // namespace
+
+TEST_CASE("a valid 2-D case parses to the expected values") {
+    const std::string path = write_case("valid", kValid2D);
+    const CaseConfig c = read_case(path);
+    CHECK(c.source_file == path);
+    CHECK(c.name == "dam");
+    CHECK(c.description == "a small dam break");
+    CHECK(c.dimension == 2);
+    CHECK(c.domain_lo == Triple{0, 0, 0});
+    CHECK(c.domain_hi == Triple{4, 3, 0});
+    CHECK(c.periodic == std::array<bool, 3>{false, false, false});
+    CHECK(c.rho0 == 1000);
+    CHECK(c.viscosity == 1e-3);
+    CHECK(c.sound_speed == 40);
+    CHECK(c.gravity == Triple{0, -9.81, 0});
+    CHECK(c.eos == EosType::tait);
+    CHECK(c.gamma == 7);
+    CHECK(c.background_pressure == 0);
+    CHECK(c.dx == 0.02);
+    REQUIRE(c.blocks.size() == 2);
+    CHECK(c.blocks[0].hi == Triple{1, 2, 0});
+    CHECK(c.blocks[0].hydrostatic);
+    CHECK(c.blocks[0].profile == VelocityProfile::uniform);
+    CHECK(c.blocks[1].velocity == Triple{1, 0, 0});
+    CHECK_FALSE(c.blocks[1].hydrostatic);
+    CHECK(c.kernel == KernelType::wendland_c2);
+    CHECK(c.h_over_dx == 1.3);
+    CHECK(c.density == DensityScheme::continuity);
+    CHECK(c.delta_sph == 0.1);
+    CHECK(c.shifting == 0);
+    CHECK(c.cfl == 0.2);
+    CHECK(c.viscous_cfl == 0.125);
+    CHECK(c.force_cfl == 0.25);
+    CHECK_FALSE(c.fixed_dt.has_value());
+    CHECK(c.walls == WallModel::dummy);
+    CHECK(c.tank_hi == Triple{4, 3, 0});
+    CHECK(c.tank_faces == std::vector<std::string>{"x-", "x+", "y-"});
+    REQUIRE(c.planes.size() == 1);
+    CHECK(c.planes[0].normal == Triple{-1, 0, 0}); // normalised
+    CHECK(c.restitution == 1.0);
+    CHECK(c.no_slip);
+    CHECK(c.end_time == 1.5);
+    CHECK(c.output_interval == 0.01);
+    CHECK(c.snapshots);
+    CHECK(c.fields == std::vector<std::string>{"position", "pressure"});
+    REQUIRE(c.probes.size() == 3);
+    CHECK(c.probes[0].name == "P1");
+    CHECK(c.probes[0].type == ProbeType::pressure);
+    CHECK(c.probes[0].position == Triple{4.0, 0.1, 0});
+    CHECK(c.probes[1].type == ProbeType::water_level);
+    CHECK(c.probes[1].x == 0.5);
+    CHECK(c.probes[1].interval == 0.001);
+    CHECK(c.probes[2].type == ProbeType::surge_front);
+    CHECK(c.particles_per_group == 2000);
+}
+
+TEST_CASE("defaults: name from the file stem, 3-D gravity along -z, all tank faces") {
+    const std::string path = write_case("cube_case", R"(
+[case]
+dimension = 3
+[domain]
+lo = [0, 0, 0]
+hi = [1, 1, 1]
+periodic = [true, false, false]
+[fluid]
+rho0 = 1000
+viscosity = 0
+sound_speed = 20
+[particles]
+dx = 0.05
+[[blocks]]
+lo = [0, 0, 0]
+hi = [1, 0.5, 0.5]
+[walls]
+model = "reflective"
+tank_lo = [0, 0, 0]
+tank_hi = [1, 1, 1]
+tank_faces = ["y-", "y+", "z-", "z+"]
+[time]
+end_time = 0.5
+)");
+    const CaseConfig c = read_case(path);
+    CHECK(c.name == "cube_case");
+    CHECK(c.dimension == 3);
+    CHECK(c.gravity == Triple{0, 0, -9.81});
+    CHECK(c.periodic == std::array<bool, 3>{true, false, false});
+    CHECK(c.walls == WallModel::reflective);
+    CHECK(c.output_interval == 0);
+    CHECK(c.kernel == KernelType::quintic);
+    CHECK(c.h_over_dx == 1.0);
+    CHECK(c.fields == CaseConfig{}.fields);
+}
+
+TEST_CASE("default tank faces are all faces of the dimension") {
+    const CaseConfig c =
+        read_case(write_case("faces", edit("tank_faces = [\"x-\", \"x+\", \"y-\"]\n", "")));
+    CHECK(c.tank_faces == std::vector<std::string>{"x-", "x+", "y-", "y+"});
+}
+
+TEST_CASE("unreadable files and syntax errors") {
+    try {
+        (void)read_case((temp_dir() / "does_not_exist.toml").string());
+        FAIL("no error");
+    } catch (const CaseError& e) {
+        CHECK(contains(e.what(), "does_not_exist.toml"));
+        CHECK(contains(e.reason(), "cannot read"));
+    }
+    const std::string reason = expect_error(edit("rho0 = 1000", "rho0 = = 1000"), "");
+    CHECK(contains(reason, "syntax error"));
+    CHECK(contains(reason, "line 12"));
+}
+
+TEST_CASE("unknown keys at every level") {
+    CHECK(contains(expect_error(edit("[time]", "[timing]\nx = 1\n[time]"), "timing"), "unknown"));
+    CHECK(contains(expect_error(edit("h_over_dx", "h_over_dxx"), "numerics.h_over_dxx"),
+                   "did you mean 'h_over_dx'"));
+    expect_error(edit("hydrostatic = false", "hydrostatic = false\ncolour = 1"),
+                 "blocks[1].colour");
+    expect_error(edit("normal = [-2, 0]", "normal = [-2, 0]\noffset = 1"),
+                 "walls.planes[0].offset");
+    expect_error(edit("interval = 0.001", "interval = 0.001\nunit = \"m\""), "probes[1].unit");
+    expect_error("dimension = 2\n" + kValid2D, "dimension");
+}
+
+TEST_CASE("wrong types") {
+    expect_error(edit("rho0 = 1000", "rho0 = \"1000\""), "fluid.rho0");
+    expect_error(edit("dimension = 2", "dimension = 2.0"), "case.dimension");
+    expect_error(edit("hydrostatic = false", "hydrostatic = 0"), "blocks[1].hydrostatic");
+    expect_error(edit("hi = [4.0, 3.0]", "hi = 4.0"), "domain.hi");
+    expect_error(edit("hi = [4.0, 3.0]", "hi = [4.0, \"3\"]"), "domain.hi[1]");
+    expect_error("numerics = 3\n" +
+                     edit("[numerics]\nkernel = \"wendland_c2\"\nh_over_dx = 1.3\ncfl = 0.2\n", ""),
+                 "numerics");
+    expect_error(edit("[[walls.planes]]\npoint = [3.5, 0]\nnormal = [-2, 0]", "planes = 3"),
+                 "walls.planes");
+    // Integers are fine where floats are expected (rho0 = 1000 above); floats are too.
+    CHECK_NOTHROW(read_case(write_case("f", edit("rho0 = 1000", "rho0 = 1000.0"))));
+}
+
+TEST_CASE("missing required keys") {
+    expect_error(edit("dimension = 2", ""), "case.dimension");
+    expect_error(edit("rho0 = 1000", ""), "fluid.rho0");
+    expect_error(edit("viscosity = 1e-3", ""), "fluid.viscosity");
+    expect_error(edit("sound_speed = 40", ""), "fluid.sound_speed");
+    expect_error(edit("dx = 0.02", ""), "particles.dx");
+    expect_error(edit("end_time = 1.5", ""), "time.end_time");
+    expect_error(edit("lo = [0, 0]\nhi = [4.0, 3.0]", "hi = [4.0, 3.0]"), "domain.lo");
+    expect_error(edit("tank_lo = [0, 0]", ""), "walls.tank_lo");
+    expect_error(edit("position = [4.0, 0.1]", ""), "probes[0].position");
+    expect_error(edit("x = 0.5", ""), "probes[1].x");
+    expect_error(edit("type = \"surge_front\"", ""), "probes[2].type");
+}
+
+TEST_CASE("physically impossible values") {
+    expect_error(edit("dx = 0.02", "dx = 0"), "particles.dx");
+    expect_error(edit("h_over_dx = 1.3", "h_over_dx = -1"), "numerics.h_over_dx");
+    expect_error(edit("rho0 = 1000", "rho0 = -1000"), "fluid.rho0");
+    expect_error(edit("viscosity = 1e-3", "viscosity = -1e-3"), "fluid.viscosity");
+    expect_error(edit("sound_speed = 40", "sound_speed = 0"), "fluid.sound_speed");
+    expect_error(edit("end_time = 1.5", "end_time = 0"), "time.end_time");
+    expect_error(edit("output_interval = 0.01", "output_interval = -0.01"), "time.output_interval");
+    expect_error(edit("cfl = 0.2", "cfl = 0.2\ndt = 0"), "numerics.dt");
+    expect_error(edit("cfl = 0.2", "cfl = 1.5"), "numerics.cfl");
+    expect_error(edit("cfl = 0.2", "viscous_cfl = 0"), "numerics.viscous_cfl");
+    expect_error(edit("cfl = 0.2", "shifting = -1"), "numerics.shifting");
+    expect_error(edit("model = \"dummy\"", "model = \"dummy\"\nrestitution = 1.1"),
+                 "walls.restitution");
+    expect_error(edit("[time]", "[runtime]\nparticles_per_group = 0\n[time]"),
+                 "runtime.particles_per_group");
+}
+
+TEST_CASE("non-finite numbers are refused anywhere") {
+    expect_error(edit("sound_speed = 40", "sound_speed = inf"), "fluid.sound_speed");
+    expect_error(edit("hi = [1, 2]", "hi = [1, nan]"), "blocks[0].hi[1]");
+    expect_error(edit("viscosity = 1e-3", "viscosity = 1e-3\ngravity = [0, -inf]"),
+                 "fluid.gravity[1]");
+}
+
+TEST_CASE("geometry: boxes, domain, tank, dimension") {
+    expect_error(edit("hi = [4.0, 3.0]", "hi = [4.0, 0]"), "domain.hi");
+    expect_error(edit("dimension = 2", "dimension = 4"), "case.dimension");
+    // Block with lo >= hi, outside the domain, overlapping another, beyond a tank wall.
+    expect_error(edit("hi = [1, 2]", "hi = [1, 0]"), "blocks[0].hi");
+    expect_error(edit("hi = [1, 2]", "hi = [1, 3.5]"), "blocks[0].hi");
+    expect_error(edit("lo = [2, 0]", "lo = [-2, 0]"), "blocks[1].lo");
+    expect_error(edit("lo = [2, 0]", "lo = [0.5, 0]"), "blocks[1].lo");
+    expect_error(edit("tank_lo = [0, 0]", "tank_lo = [0.5, 0]"), "blocks[0].lo");
+    // Tank outside the domain.
+    expect_error(edit("tank_hi = [4, 3]", "tank_hi = [5, 3]"), "walls.tank_hi");
+    // A third component in a 2-D case.
+    CHECK(contains(expect_error(edit("lo = [0, 0]\nhi = [1, 2]", "lo = [0, 0, 0]\nhi = [1, 2]"),
+                                "blocks[0].lo"),
+                   "exactly 2"));
+    expect_error(edit("normal = [-2, 0]", "normal = [0, 0]"), "walls.planes[0].normal");
+    // A block thinner than dx/2 would hold no particle.
+    expect_error(edit("hi = [1, 2]", "hi = [1, 0.005]"), "blocks[0].hi");
+    // Walls on a periodic axis; a face listed twice.
+    expect_error(edit("hi = [4.0, 3.0]", "hi = [4.0, 3.0]\nperiodic = [true, false]"),
+                 "walls.tank_faces");
+    expect_error(edit("[\"x-\", \"x+\", \"y-\"]", "[\"x-\", \"x-\"]"), "walls.tank_faces");
+    expect_error(edit("position = [4.0, 0.1]", "position = [4.5, 0.1]"), "probes[0].position");
+    expect_error(edit("x = 0.5", "x = -0.5"), "probes[1].x");
+}
+
+TEST_CASE("enumerations list the allowed values") {
+    const std::string r = expect_error(edit("\"wendland_c2\"", "\"gaussian\""), "numerics.kernel");
+    CHECK(contains(r, "quintic"));
+    CHECK(contains(r, "cubic_spline"));
+    expect_error(edit("eos = \"tait\"", "eos = \"ideal\""), "fluid.eos");
+    expect_error(edit("model = \"dummy\"", "model = \"sticky\""), "walls.model");
+    expect_error(edit("type = \"pressure\"", "type = \"temperature\""), "probes[0].type");
+    expect_error(edit("[\"x-\", \"x+\", \"y-\"]", "[\"x-\", \"z+\"]"), "walls.tank_faces");
+    expect_error(edit("[\"position\", \"pressure\"]", "[\"position\", \"vorticity\"]"),
+                 "output.fields");
+}
+
+TEST_CASE("probe names become file names") {
+    expect_error(edit("name = \"H_1\"", "name = \"P1\""), "probes[1].name");
+    expect_error(edit("name = \"H_1\"", "name = \"../H1\""), "probes[1].name");
+    expect_error(edit("name = \"H_1\"", "name = \"H 1\""), "probes[1].name");
+    expect_error(edit("name = \"H_1\"", "name = \"\""), "probes[1].name");
+}
+
+TEST_CASE("particle count limit names the estimate") {
+    const std::string r = expect_error(edit("dx = 0.02", "dx = 0.0001"), "particles.dx");
+    CHECK(contains(r, "2.5e+08")); // (1*2 + 1*0.5) / 1e-8
+}
+
+TEST_CASE("overrides") {
+    const std::string path = write_case("over", kValid2D);
+    const CaseConfig c = read_case(
+        path, {"numerics.kernel=cubic_spline", "time.end_time=0.1", "numerics.kernel=quintic",
+               "blocks[1].velocity=[0, 2]", "probes.0.position = [1, 1]", "case.name=\"other\"",
+               "runtime.particles_per_group=64", "walls.planes.0.normal=[0, 3]",
+               "case.description=hello world"});
+    CHECK(c.kernel == KernelType::quintic); // the last override wins
+    CHECK(c.end_time == 0.1);
+    CHECK(c.blocks[1].velocity == Triple{0, 2, 0});
+    CHECK(c.probes[0].position == Triple{1, 1, 0});
+    CHECK(c.name == "other");
+    CHECK(c.particles_per_group == 64); // [runtime] was absent from the file
+    CHECK(c.planes[0].normal == Triple{0, 1, 0});
+    CHECK(c.description == "hello world"); // not valid TOML: taken as a string
+
+    const auto fails = [&](const std::string& o, const std::string& key) {
+        try {
+            (void)read_case(path, {o});
+            FAIL("no error for " << o);
+        } catch (const CaseError& e) {
+            CHECK_MESSAGE(e.key() == key, e.what());
+            CHECK(e.file() == path);
+            CHECK(contains(e.reason(), "--set"));
+        }
+    };
+    fails("numerics.kernal=quintic", "numerics.kernal");
+    fails("solver.threads=4", "solver");
+    fails("numerics=1", "numerics");
+    fails("blocks.5.lo=[0,0]", "blocks[5]");
+    fails("time.end_time.x=1", "time.end_time.x");
+    fails("no_equals_sign", "no_equals_sign");
+    // A known key with a bad value is reported like a bad value in the file.
+    fails("time.end_time=-1", "time.end_time");
+    fails("time.end_time=soon", "time.end_time");
+}

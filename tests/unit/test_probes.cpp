@@ -1,0 +1,108 @@
+// Probes on hand-built particle sets with known answers.
+#include "sluice/physics/probes.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using namespace sluice;
+
+namespace {
+
+constexpr Real kRho = 1000, kG = 9.81;
+
+// Fluid on a lattice of spacing dx filling [x0, x1] x [0, height], hydrostatic pressure.
+void fill_block(Particles<2>& ps, Real x0, Real x1, Real height, Real dx) {
+    const int nx = static_cast<int>(std::lround((x1 - x0) / dx));
+    const int ny = static_cast<int>(std::lround(height / dx));
+    for (int i = 0; i < nx; ++i)
+        for (int j = 0; j < ny; ++j) {
+            const Vec<2> x(x0 + (i + 0.5) * dx, (j + 0.5) * dx);
+            ps.push_back(ps.size(), Kind::fluid, x, Vec<2>::Zero(), kRho, kRho * dx * dx);
+            ps.p.back() = kRho * kG * (height - x[1]);
+        }
+}
+
+void add(Particles<2>& ps, Kind kind, Vec<2> x, Real dx, Real p = 0) {
+    ps.push_back(ps.size(), kind, x, Vec<2>::Zero(), kRho, kRho * dx * dx);
+    ps.p.back() = p;
+}
+
+} // namespace
+
+TEST_CASE("pressure probe interpolates a hydrostatic field") {
+    const Real dx = 0.02, height = 1.0;
+    Particles<2> ps;
+    fill_block(ps, 0, 1, height, dx);
+    // A wall particle with an absurd pressure right at the probe: must be ignored.
+    add(ps, Kind::wall, Vec<2>(0.5, 0.4), dx, 1e9);
+
+    for (auto type : {KernelType::quintic, KernelType::wendland_c2, KernelType::cubic_spline}) {
+        const auto kernel = make_kernel<2>(type, 1.3 * dx);
+        for (const Vec<2>& point : {Vec<2>(0.5, 0.4), Vec<2>(0.337, 0.611), Vec<2>(0.2, 0.1)}) {
+            const Real expected = kRho * kG * (height - point[1]);
+            const Real got = pressure_probe(ps, kernel, point);
+            CHECK(got == doctest::Approx(expected).epsilon(1e-3));
+        }
+    }
+    // The generic (non-variant) kernel path gives the same answer as the variant.
+    const Vec<2> point(0.337, 0.611);
+    CHECK(pressure_probe(ps, WendlandC2Kernel<2>(1.3 * dx), point) ==
+          pressure_probe(ps, make_kernel<2>(KernelType::wendland_c2, 1.3 * dx), point));
+    // Far from any fluid: NaN, not zero.
+    CHECK(std::isnan(pressure_probe(ps, QuinticKernel<2>(1.3 * dx), Vec<2>(3, 3))));
+}
+
+TEST_CASE("surge front ignores a detached droplet") {
+    const Real dx = 0.02;
+    Particles<2> ps;
+    fill_block(ps, 0, 1, 0.5, dx);
+    // A small droplet far ahead of the front, and a wall particle even further.
+    add(ps, Kind::fluid, Vec<2>(2.0, 0.3), dx);
+    add(ps, Kind::fluid, Vec<2>(2.0 + dx, 0.3), dx);
+    add(ps, Kind::fluid, Vec<2>(2.0, 0.3 + dx), dx);
+    add(ps, Kind::wall, Vec<2>(3.0, 0.0), dx);
+    CHECK(surge_front(ps, dx) == doctest::Approx(1.0).epsilon(1e-12));
+
+    const auto bulk = bulk_fluid(ps, dx);
+    CHECK(bulk.size() == 50 * 25);
+    CHECK(surge_front(ps, bulk, dx) == surge_front(ps, dx));
+
+    // A particle continuing the block within the link distance (1.5 dx) does count.
+    add(ps, Kind::fluid, Vec<2>(0.99 + 1.4 * dx, 0.01), dx);
+    CHECK(surge_front(ps, dx) == doctest::Approx(0.99 + 1.4 * dx + dx / 2).epsilon(1e-12));
+    // One just beyond it does not.
+    add(ps, Kind::fluid, Vec<2>(0.99 + 3.0 * dx, 0.01), dx);
+    CHECK(surge_front(ps, dx) == doctest::Approx(0.99 + 1.4 * dx + dx / 2).epsilon(1e-12));
+}
+
+TEST_CASE("water level of a lattice block equals its height") {
+    const Real dx = 0.02, height = 0.5;
+    Particles<2> ps;
+    fill_block(ps, 0, 1, height, dx);
+    // Spray above the column: not connected to the bulk, so not the surface.
+    add(ps, Kind::fluid, Vec<2>(0.5, 0.9), dx);
+    for (Real x : {0.01, 0.5, 0.731, 0.99}) {
+        const Real level = water_level(ps, dx, x);
+        CHECK(std::abs(level - height) <= dx / 2);
+    }
+    CHECK(std::isnan(water_level(ps, dx, 1.5))); // dry
+    Particles<2> empty;
+    CHECK(std::isnan(water_level(empty, dx, 0.5)));
+    CHECK(std::isnan(surge_front(empty, dx)));
+}
+
+TEST_CASE("3-D: the vertical axis is z") {
+    const Real dx = 0.1;
+    Particles<3> ps;
+    for (int i = 0; i < 10; ++i)
+        for (int j = 0; j < 4; ++j)
+            for (int k = 0; k < 3; ++k)
+                ps.push_back(ps.size(), Kind::fluid,
+                             Vec<3>((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx), Vec<3>::Zero(),
+                             kRho, kRho * dx * dx * dx);
+    ps.push_back(ps.size(), Kind::fluid, Vec<3>(0.5, 0.2, 2.0), Vec<3>::Zero(), kRho, 1);
+    CHECK(water_level(ps, dx, 0.5) == doctest::Approx(0.3).epsilon(1e-12));
+    CHECK(surge_front(ps, dx) == doctest::Approx(1.0).epsilon(1e-12));
+    CHECK(bulk_fluid(ps, dx).size() == 120);
+}
