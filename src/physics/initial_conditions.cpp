@@ -75,7 +75,12 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
                     -cfg.rho0 * b.amplitude * b.amplitude / 4 * (std::cos(2 * X) + std::cos(2 * Y));
             }
             const double rho = eos.density(p);
-            P.push_back(static_cast<ParticleId>(P.size()), Kind::fluid, x, v, rho, rho * volume);
+            // Continuity: the mass of a lattice cell of the reference fluid, so a column holds
+            // the mass of its height and the initial pressure lives in rho alone. Summation:
+            // density comes from masses and positions, so the masses carry the initial field.
+            const double m = cfg.density == DensityScheme::summation ? rho * volume
+                                                                     : cfg.rho0 * volume;
+            P.push_back(static_cast<ParticleId>(P.size()), Kind::fluid, x, v, rho, m);
         });
     }
 }

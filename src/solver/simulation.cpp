@@ -4,6 +4,7 @@
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/initial_conditions.hpp"
 #include "sluice/physics/integrator.hpp"
+#include "sluice/physics/shifting.hpp"
 
 #include <tbb/task_arena.h>
 
@@ -115,6 +116,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg)
         dt_ = rest.min();
     }
     limits_ = rest;
+    for (std::size_t i = 0; i < P_.size(); ++i)
+        u_max_ = std::max(u_max_, P_.v[i].norm());
 
     const std::size_t n = P_.size();
     const auto per_group = static_cast<std::size_t>(std::max(1, cfg.particles_per_group));
@@ -195,6 +198,7 @@ void Simulation<D>::build_graph() {
     stage_kinds_.push_back(StageKind::drift);
     group_limits_.assign(topo_.neighbours.size(), {});
     group_failure_.assign(topo_.neighbours.size(), {});
+    group_speed_.assign(topo_.neighbours.size(), 0.0);
     graph_ = std::make_unique<tasks::StepGraph>(
         specs, topo_.neighbours, [this](int stage, int group) { run_stage(stage, group); });
 }
@@ -228,8 +232,14 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
             dummy_wall_state(nb, kernel, eos_, momentum_.gravity, cfg_.no_slip, c, P_);
         break;
     case StageKind::accel:
-        for (CellIndex c : cells)
+        for (CellIndex c : cells) {
             acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a));
+            if (cfg_.shifting > 0) {
+                const ShiftingParams sp{cfg_.shifting * u_max_ * h_ * dt_, kernel.W(cfg_.dx),
+                                        0.1 * cfg_.dx};
+                particle_shift(nb, kernel, sp, c, P_, std::span<Vec<D>>(P_.shift));
+            }
+        }
         break;
     case StageKind::kick:
         // v_half is read by other groups only in their drift, which waits for this kick.
@@ -240,6 +250,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
         break;
     case StageKind::drift: {
         TimeStepLimits lim;
+        Real speed = 0;
         std::string failure;
         for (CellIndex c : cells) {
             if (continuity_)
@@ -253,6 +264,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                     continue;
                 }
                 Vec<D> x = drift<D>(P_.x[i], P_.v_half[i], dt_);
+                if (cfg_.shifting > 0) x += P_.shift[i];
                 Vec<D> v = velocity_estimate<D>(P_.v_half[i], P_.a[i], dt_);
                 const Real rho = continuity_ ? P_.rho[i] + dt_ * P_.drho[i] : P_.rho[i];
                 if (!planes_.empty())
@@ -263,6 +275,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                 P_.rho_next[i] = rho;
                 lim = min(lim, particle_time_step(ts_params_, eos_.sound_speed(rho), v.norm(),
                                                   P_.a[i].norm()));
+                speed = std::max(speed, v.norm());
                 if (failure.empty()) {
                     bool bad = !std::isfinite(rho) || rho <= 0 || !x.allFinite() || !v.allFinite();
                     const char* what = "a non-finite or non-positive state";
@@ -283,6 +296,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
             }
         }
         group_limits_[static_cast<std::size_t>(group)] = lim;
+        group_speed_[static_cast<std::size_t>(group)] = speed;
         group_failure_[static_cast<std::size_t>(group)] = std::move(failure);
         break;
     }
@@ -300,6 +314,7 @@ void Simulation<D>::step() {
     for (const auto& l : group_limits_)
         lim = min(lim, l);
     limits_ = lim;
+    u_max_ = *std::max_element(group_speed_.begin(), group_speed_.end());
     time_ += dt_;
     ++steps_;
     dt_prev_ = dt_;

@@ -25,6 +25,7 @@ struct Particles {
     std::vector<Real> drho;       // density rate [kg/m^3/s] (continuity scheme)
     std::vector<Vec<D>> grad_rho; // renormalised density gradient (delta-SPH)
     std::vector<Vec<D>> v_bc;     // wall particles: velocity seen by the viscous term (Adami)
+    std::vector<Vec<D>> shift;    // particle-shifting displacement of this step
 
     // Leap-frog half-step velocity v^{n-1/2}; read and written only by the particle's own
     // integration task, so it needs no second buffer.
@@ -49,6 +50,7 @@ struct Particles {
         drho.resize(n, 0);
         grad_rho.resize(n, Vec<D>::Zero());
         v_bc.resize(n, Vec<D>::Zero());
+        shift.resize(n, Vec<D>::Zero());
         v_half.resize(n, Vec<D>::Zero());
         x_next.resize(n, Vec<D>::Zero());
         v_next.resize(n, Vec<D>::Zero());
