@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# A short real run writes the documented results folder: snapshots + XDMF series, probe CSVs
+# with a header and time in the first column, and summary.json with the documented keys; and
+# `sluice info` describes the case. Usage: run_outputs.sh <sluice executable> <source dir>
+set -u
+exe=$(realpath "$1")
+src=$(realpath "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+"$exe" info "$src/cases/dam_break_2d.toml" >"$work/info.txt" || fail "info exit code $?"
+grep -q "3200 fluid" "$work/info.txt" || fail "info does not report the 3200 fluid particles"
+
+"$exe" run "$src/cases/dam_break_2d.toml" --out "$work/out" --threads 2 --quiet \
+    --set time.end_time=0.02 --set time.output_interval=0.01 || fail "run exit code $?"
+out="$work/out"
+[ -f "$out/summary.json" ] || fail "no summary.json"
+[ -f "$out/snapshots.xmf" ] || fail "no snapshots.xmf"
+n=$(ls "$out"/snapshots/snap_*.h5 2>/dev/null | wc -l)
+[ "$n" -eq 3 ] || fail "expected 3 snapshots (t = 0, 0.01, 0.02), found $n"
+for p in p2_right_wall front level_x0; do
+    f="$out/probes/$p.csv"
+    [ -f "$f" ] || { fail "missing $f"; continue; }
+    head -1 "$f" | grep -q '^time_s,' || fail "$f header does not start with time_s"
+    [ "$(wc -l <"$f")" -ge 3 ] || fail "$f has fewer than 2 samples"
+done
+for key in case dimension particles steps simulated_time wall_seconds \
+    particle_steps_per_second threads ranks git_revision; do
+    grep -q "\"$key\"" "$out/summary.json" || fail "summary.json lacks $key"
+done
+grep -q '"threads": 2' "$out/summary.json" || fail "summary.json does not record 2 threads"
+grep -q '"mass_relative_change": 0.0' "$out/summary.json" || fail "mass not conserved exactly"
+
+# A fixed time step above the stability limit is refused with both numbers, exit code 2.
+"$exe" run "$src/cases/debris_box_3d.toml" --out "$work/bad" --set numerics.dt=0.001 \
+    2>"$work/err.txt"
+code=$?
+[ $code -eq 2 ] || fail "unstable fixed dt: exit code $code, expected 2"
+grep -q "numerics.dt" "$work/err.txt" || fail "unstable dt message does not name numerics.dt"
+grep -q "stability limit" "$work/err.txt" || fail "unstable dt message does not give the limit"
+[ ! -e "$work/bad" ] || fail "a refused case left a results folder"
+
+if [ $failures -eq 0 ]; then echo "run_outputs: all checks passed"; fi
+exit $failures

@@ -1,0 +1,54 @@
+// 2-D dam break (cases/dam_break_2d.toml) against Martin & Moyce (1952), n^2 = 2: the surge
+// front Z = x/a against T = t sqrt(2g/a). The RMS relative deviation over the experimental
+// points with T <= 3 (both column widths) must stay below 10 %.
+#include "sluice/physics/probes.hpp"
+#include "sluice/solver/simulation.hpp"
+#include "validation_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace sluice;
+using namespace sluice::testing;
+
+TEST_CASE("Dam break surge front follows Martin & Moyce (n^2 = 2)") {
+    const CaseConfig cfg = read_case(case_path("dam_break_2d.toml"), {"time.end_time=0.45"});
+    Simulation<2> sim(cfg);
+    const double a = cfg.blocks.at(0).hi[0] - cfg.blocks.at(0).lo[0];
+    const double g = 9.81, T_scale = std::sqrt(2 * g / a);
+    const double mass0 = sim.particles().total_mass();
+
+    std::vector<double> Ts{0.0}, Zs{1.0};
+    double next_sample = 0.005;
+    while (sim.time() < cfg.end_time) {
+        sim.step();
+        if (sim.time() >= next_sample) {
+            Ts.push_back(sim.time() * T_scale);
+            Zs.push_back(surge_front(sim.particles(), cfg.dx) / a);
+            next_sample += 0.005;
+        }
+    }
+    CHECK(sim.particles().total_mass() == mass0);
+
+    double sum2 = 0;
+    int n = 0;
+    for (const auto& row : read_csv(data_path("martin_moyce_1952_n2_2.csv"))) {
+        const double T = std::stod(row[1]), Z = std::stod(row[2]);
+        if (T > 3.0)
+            continue;
+        const double Zsim = interpolate(Ts, Zs, T);
+        const double rel = (Zsim - Z) / Z;
+        std::printf("  %-6s T = %.3f  Z_exp = %.3f  Z_sim = %.3f  (%+.1f %%)\n", row[0].c_str(), T,
+                    Z, Zsim, 100 * rel);
+        sum2 += rel * rel;
+        ++n;
+    }
+    REQUIRE(n >= 8);
+    const double rms = std::sqrt(sum2 / n);
+    std::printf(
+        "dam break: RMS relative front deviation (T <= 3, %d points) = %.2f %%, %ld steps\n", n,
+        100 * rms, sim.steps());
+    CHECK(rms < 0.10);
+}
