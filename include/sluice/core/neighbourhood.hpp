@@ -5,6 +5,7 @@
 #include "sluice/core/cell_grid.hpp"
 
 #include <span>
+#include <vector>
 
 namespace sluice {
 
@@ -15,12 +16,28 @@ struct AdjacentCells {
     int count = 0;
 };
 
+// Neighbours of a contiguous range of particles (one cell group), found once per step and
+// reused by every stage of that step: positions do not change within a step, so the list is
+// exact. Pairs are kept in the order of the cell scan, so sums are bitwise the same as
+// without the list. Buffers keep their capacity between steps (no allocation in a step).
+template <int D>
+struct NeighbourList {
+    std::uint32_t first = 0;           // index of the first particle of the range
+    std::vector<std::uint32_t> offset; // pairs of particle first + k: [offset[k], offset[k+1])
+    std::vector<std::uint32_t> j;      // neighbour index
+    std::vector<Vec<D>> shift;         // periodic image shift added to x_i - x_j
+    [[nodiscard]] bool covers(std::uint32_t i) const {
+        return i >= first && i + 1 < first + offset.size();
+    }
+};
+
 template <int D>
 struct Neighbourhood {
     const CellGrid<D>* grid = nullptr;
     const CellRanges* cells = nullptr;
     std::span<const Vec<D>> x;
     Real support = 0;
+    const NeighbourList<D>* list = nullptr; // when set, used for the particles it covers
 
     [[nodiscard]] AdjacentCells<D> adjacent(CellIndex c) const {
         AdjacentCells<D> a;
@@ -33,6 +50,16 @@ struct Neighbourhood {
     // the cell holding i.
     template <class F>
     void for_each_neighbour(const AdjacentCells<D>& adj, std::uint32_t i, F&& f) const {
+        if (list != nullptr && list->covers(i)) {
+            const std::uint32_t k = i - list->first;
+            const Vec<D> xi = x[i];
+            for (std::uint32_t p = list->offset[k]; p < list->offset[k + 1]; ++p) {
+                const std::uint32_t j = list->j[p];
+                const Vec<D> dx = xi + list->shift[p] - x[j];
+                f(j, dx, dx.squaredNorm());
+            }
+            return;
+        }
         const Real support2 = support * support;
         const Vec<D> xi = x[i];
         for (int k = 0; k < adj.count; ++k) {
@@ -44,6 +71,33 @@ struct Neighbourhood {
                 const Real r2 = dx.squaredNorm();
                 if (r2 < support2)
                     f(j, dx, r2);
+            }
+        }
+    }
+
+    // Fills `out` with the neighbours of the particles of `cells`, which must be contiguous
+    // in the particle arrays and given in storage order (a cell group's cells).
+    void build_list(std::span<const CellIndex> group_cells, NeighbourList<D>& out) const {
+        out.offset.clear();
+        out.j.clear();
+        out.shift.clear();
+        out.first = group_cells.empty() ? 0 : cells->begin[group_cells.front()];
+        out.offset.push_back(0);
+        const Real support2 = support * support;
+        for (CellIndex c : group_cells) {
+            const AdjacentCells<D> adj = adjacent(c);
+            for (std::uint32_t i = cells->begin[c]; i < cells->end[c]; ++i) {
+                const Vec<D> xi = x[i];
+                for (int k = 0; k < adj.count; ++k) {
+                    const CellIndex nc = adj.cell[k].cell;
+                    const Vec<D> xis = xi + adj.cell[k].shift;
+                    for (std::uint32_t j = cells->begin[nc]; j < cells->end[nc]; ++j)
+                        if ((xis - x[j]).squaredNorm() < support2) {
+                            out.j.push_back(j);
+                            out.shift.push_back(adj.cell[k].shift);
+                        }
+                }
+                out.offset.push_back(static_cast<std::uint32_t>(out.j.size()));
             }
         }
     }
