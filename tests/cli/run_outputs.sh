@@ -42,5 +42,16 @@ grep -q "numerics.dt" "$work/err.txt" || fail "unstable dt message does not name
 grep -q "stability limit" "$work/err.txt" || fail "unstable dt message does not give the limit"
 [ ! -e "$work/bad" ] || fail "a refused case left a results folder"
 
+# A run that goes wrong physically (no walls: the water falls out of the domain) stops with
+# exit code 3 naming the particle and the step, keeps the last good snapshot, and leaves no
+# summary.json (the folder does not look complete).
+"$exe" run "$src/cases/hydrostatic_2d.toml" --out "$work/fall" --quiet --set walls.model=none \
+    2>"$work/fall.txt"
+code=$?
+[ $code -eq 3 ] || fail "escaping particle: exit code $code, expected 3"
+grep -q "particle .* outside the domain at step" "$work/fall.txt" || fail "no particle/step in: $(cat "$work/fall.txt")"
+grep -q "last good state in" "$work/fall.txt" || fail "no last good snapshot named"
+[ ! -e "$work/fall/summary.json" ] || fail "a failed run left summary.json"
+
 if [ $failures -eq 0 ]; then echo "run_outputs: all checks passed"; fi
 exit $failures
