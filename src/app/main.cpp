@@ -6,6 +6,9 @@
 #include "sluice/solver/run.hpp"
 #include "sluice/version.hpp"
 
+#define TBB_PREVIEW_WAITING_FOR_WORKERS 1
+#include <tbb/global_control.h>
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -83,6 +86,39 @@ void add_case_options(CLI::App* cmd, std::string& case_path, std::vector<std::st
 
 } // namespace
 
+// Reads the case and runs or describes it; returns the process exit code.
+int execute(bool run_requested, const std::string& case_path, const std::vector<std::string>& sets,
+            const std::string& out_dir, int threads, bool quiet, bool verbose) {
+    try {
+        // Everything is validated here, before the solver creates the results folder.
+        const sluice::CaseConfig cfg = sluice::read_case(case_path, sets);
+        if (run_requested) {
+            sluice::RunOptions opts;
+            opts.out_dir = out_dir.empty() ? "results/" + cfg.name : out_dir;
+            opts.threads = threads;
+            opts.quiet = quiet;
+            opts.verbose = verbose;
+            const sluice::RunResult result = sluice::run_case(cfg, opts);
+            if (!quiet)
+                fmt::print(stderr,
+                           "sluice: done: {} steps to t = {:.6g} s in {:.1f} s; results in {}\n",
+                           result.steps, result.simulated_time, result.wall_seconds, opts.out_dir);
+        } else {
+            print_info(cfg, sluice::describe_case(cfg));
+        }
+    } catch (const sluice::CaseError& e) {
+        fmt::print(stderr, "sluice: error: {}\n", e.what());
+        return kExitCaseError;
+    } catch (const sluice::RunError& e) {
+        fmt::print(stderr, "sluice: error: the run failed: {}\n", e.what());
+        return kExitRunError;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "sluice: error: {}\n", e.what());
+        return kExitFailure;
+    }
+    return 0;
+}
+
 int main(int argc, char** argv) {
     CLI::App app{"sluice: particle (SPH) solver for free-surface flow", "sluice"};
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
@@ -114,32 +150,9 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : kExitCaseError;
     }
 
-    try {
-        // Everything is validated here, before the solver creates the results folder.
-        const sluice::CaseConfig cfg = sluice::read_case(case_path, sets);
-        if (run->parsed()) {
-            sluice::RunOptions opts;
-            opts.out_dir = out_dir.empty() ? "results/" + cfg.name : out_dir;
-            opts.threads = threads;
-            opts.quiet = quiet;
-            opts.verbose = verbose;
-            const sluice::RunResult result = sluice::run_case(cfg, opts);
-            if (!quiet)
-                fmt::print(stderr,
-                           "sluice: done: {} steps to t = {:.6g} s in {:.1f} s; results in {}\n",
-                           result.steps, result.simulated_time, result.wall_seconds, opts.out_dir);
-        } else {
-            print_info(cfg, sluice::describe_case(cfg));
-        }
-    } catch (const sluice::CaseError& e) {
-        fmt::print(stderr, "sluice: error: {}\n", e.what());
-        return kExitCaseError;
-    } catch (const sluice::RunError& e) {
-        fmt::print(stderr, "sluice: error: the run failed: {}\n", e.what());
-        return kExitRunError;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "sluice: error: {}\n", e.what());
-        return kExitFailure;
-    }
-    return 0;
+    // Join oneTBB's worker threads before exit (sanitizers otherwise report their state).
+    tbb::task_scheduler_handle workers{tbb::attach{}};
+    const int code = execute(run->parsed(), case_path, sets, out_dir, threads, quiet, verbose);
+    tbb::finalize(workers, std::nothrow);
+    return code;
 }
