@@ -17,7 +17,7 @@ struct Particles {
     std::vector<Vec<D>> x;  // position [m]
     std::vector<Vec<D>> v;  // velocity [m/s]
     std::vector<Real> rho;  // density [kg/m^3]
-    std::vector<Real> mass; // [kg], constant in time
+    std::vector<Real> mass; // [kg]: constant for fluid; wall particles rho_w dx^D, set each step
 
     // Derived within a step.
     std::vector<Real> p;          // pressure [Pa]
