@@ -199,6 +199,7 @@ void Simulation<D>::build_graph() {
     group_limits_.assign(topo_.neighbours.size(), {});
     group_failure_.assign(topo_.neighbours.size(), {});
     group_speed_.assign(topo_.neighbours.size(), 0.0);
+    lists_.resize(topo_.neighbours.size());
     graph_ = std::make_unique<tasks::StepGraph>(
         specs, topo_.neighbours, [this](int stage, int group) { run_stage(stage, group); });
 }
@@ -211,7 +212,13 @@ void Simulation<D>::run_stage(int stage, int group) {
 template <int D>
 template <class K>
 void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
-    const Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x), kernel.support()};
+    Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x), kernel.support()};
+    NeighbourList<D>& list = lists_[static_cast<std::size_t>(group)];
+    // The first stage finds the group's neighbours once; every later stage of the step reuses
+    // them (positions do not change within a step).
+    if (stage == 0)
+        nb.build_list(topo_.cells[static_cast<std::size_t>(group)], list);
+    nb.list = &list;
     const auto& cells = topo_.cells[static_cast<std::size_t>(group)];
     const StageKind kind = stage_kinds_[static_cast<std::size_t>(stage)];
     if (density_only_ && kind != StageKind::density)
@@ -229,7 +236,8 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
         break;
     case StageKind::walls:
         for (CellIndex c : cells)
-            dummy_wall_state(nb, kernel, eos_, momentum_.gravity, cfg_.no_slip, c, P_);
+            dummy_wall_state(nb, kernel, eos_, momentum_.gravity, cfg_.no_slip,
+                             std::pow(cfg_.dx, D), c, P_);
         break;
     case StageKind::accel:
         for (CellIndex c : cells) {
@@ -264,7 +272,8 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                     continue;
                 }
                 Vec<D> x = drift<D>(P_.x[i], P_.v_half[i], dt_);
-                if (cfg_.shifting > 0) x += P_.shift[i];
+                if (cfg_.shifting > 0)
+                    x += P_.shift[i];
                 Vec<D> v = velocity_estimate<D>(P_.v_half[i], P_.a[i], dt_);
                 const Real rho = continuity_ ? P_.rho[i] + dt_ * P_.drho[i] : P_.rho[i];
                 if (!planes_.empty())

@@ -88,7 +88,8 @@ private:
     // Per-group results of the drift stage.
     std::vector<TimeStepLimits> group_limits_;
     std::vector<std::string> group_failure_;
-    std::vector<Real> group_speed_; // largest fluid speed per group (shifting velocity scale)
+    std::vector<NeighbourList<D>> lists_; // per group, rebuilt by its first stage each step
+    std::vector<Real> group_speed_;       // largest fluid speed per group (shifting velocity scale)
     Real u_max_ = 0;
 
     double time_ = 0, dt_ = 0, dt_prev_ = 0;
