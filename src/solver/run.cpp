@@ -138,10 +138,10 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
 
     nlohmann::json extra;
     nlohmann::json stages = nlohmann::json::object();
+    const auto names = sim.stage_names();
+    for (std::size_t s = 0; s < names.size() && s < sim.stage_busy_seconds().size(); ++s)
+        stages[names[s]] = sim.stage_busy_seconds()[s];
     const auto& graph = sim.graph();
-    for (int s = 0; s < graph.stage_count(); ++s)
-        stages[graph.stages()[static_cast<std::size_t>(s)].name] =
-            graph.stage_seconds_total()[static_cast<std::size_t>(s)];
     extra["stage_busy_seconds"] = stages;
     extra["rebin_seconds"] = sim.rebin_seconds_total();
     extra["cell_groups"] = graph.group_count();

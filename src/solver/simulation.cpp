@@ -315,6 +315,11 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
 template <int D>
 void Simulation<D>::step() {
     graph_->run();
+    // The stage layout is fixed for a case, so totals carry over when the graph is rebuilt.
+    stage_busy_.resize(static_cast<std::size_t>(graph_->stage_count()), 0.0);
+    for (int s = 0; s < graph_->stage_count(); ++s)
+        for (int g = 0; g < graph_->group_count(); ++g)
+            stage_busy_[static_cast<std::size_t>(s)] += graph_->node_seconds(s, g);
     for (const std::string& f : group_failure_)
         if (!f.empty())
             throw RunError(f);
@@ -332,6 +337,14 @@ void Simulation<D>::step() {
     const auto t0 = std::chrono::steady_clock::now();
     rebin_and_decompose();
     rebin_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+template <int D>
+std::vector<std::string> Simulation<D>::stage_names() const {
+    std::vector<std::string> names;
+    for (const auto& spec : graph_->stages())
+        names.push_back(spec.name);
+    return names;
 }
 
 template <int D>

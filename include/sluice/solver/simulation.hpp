@@ -46,7 +46,12 @@ public:
     // Limits measured on the last step.
     [[nodiscard]] const TimeStepLimits& last_limits() const { return limits_; }
 
-    // Seconds spent outside the graph in the last run's step (rebin, regroup, reductions).
+    // Busy seconds per stage summed over all steps (across re-decompositions), and the
+    // stage names in graph order.
+    [[nodiscard]] const std::vector<double>& stage_busy_seconds() const { return stage_busy_; }
+    [[nodiscard]] std::vector<std::string> stage_names() const;
+
+    // Seconds spent in rebinning and re-decomposition between steps, summed over the run.
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
 
     // Runs only the first stage (density + EOS) over the graph on the current positions;
@@ -96,6 +101,7 @@ private:
     long steps_ = 0;
     TimeStepLimits limits_;
     double rebin_seconds_ = 0;
+    std::vector<double> stage_busy_;
 };
 
 extern template class Simulation<2>;
