@@ -19,11 +19,11 @@ enum class VelocityProfile { uniform, taylor_green };
 enum class ProbeType { pressure, water_level, surge_front };
 
 struct FluidBlock {
-    Triple lo{}, hi{};            // [m] axis-aligned box filled on a lattice of spacing dx
-    Triple velocity{};            // [m/s] initial velocity (uniform profile)
+    Triple lo{}, hi{}; // [m] axis-aligned box filled on a lattice of spacing dx
+    Triple velocity{}; // [m/s] initial velocity (uniform profile)
     VelocityProfile profile = VelocityProfile::uniform;
-    double amplitude = 0;         // [m/s] velocity scale of a non-uniform profile
-    bool hydrostatic = true;      // initial density/pressure from rho0*|g|*(depth) with the EOS
+    double amplitude = 0;    // [m/s] velocity scale of a non-uniform profile
+    bool hydrostatic = true; // initial density/pressure from rho0*|g|*(depth) with the EOS
 };
 
 // A planar reflective wall: particles are kept on the side the normal points to.
@@ -33,16 +33,16 @@ struct WallPlane {
 };
 
 struct ProbeConfig {
-    std::string name;             // file name stem: probes/<name>.csv
+    std::string name; // file name stem: probes/<name>.csv
     ProbeType type = ProbeType::pressure;
-    Triple position{};            // pressure probe point [m]
-    double x = 0;                 // water level: x position [m]
-    double interval = 0;          // [s] sampling interval; 0 = every output interval
+    Triple position{};   // pressure probe point [m]
+    double x = 0;        // water level: x position [m]
+    double interval = 0; // [s] sampling interval; 0 = every output interval
 };
 
 struct CaseConfig {
-    std::string source_file;      // path of the TOML file (for messages)
-    std::string name;             // case name; default: file stem
+    std::string source_file; // path of the TOML file (for messages)
+    std::string name;        // case name; default: file stem
     std::string description;
     int dimension = 2;
 
@@ -51,41 +51,41 @@ struct CaseConfig {
     std::array<bool, 3> periodic{false, false, false};
 
     // [fluid]
-    double rho0 = 1000;           // reference density [kg/m^3]
-    double viscosity = 0;         // dynamic viscosity mu [Pa s]
-    double sound_speed = 0;       // artificial speed of sound c0 [m/s]
-    Triple gravity{0, -9.81, 0};  // body acceleration [m/s^2]
+    double rho0 = 1000;          // reference density [kg/m^3]
+    double viscosity = 0;        // dynamic viscosity mu [Pa s]
+    double sound_speed = 0;      // artificial speed of sound c0 [m/s]
+    Triple gravity{0, -9.81, 0}; // body acceleration [m/s^2]
     EosType eos = EosType::linear;
-    double gamma = 7;             // Tait exponent
+    double gamma = 7;               // Tait exponent
     double background_pressure = 0; // [Pa] added to the EOS
 
     // [particles]
-    double dx = 0;                // lattice spacing [m]
+    double dx = 0; // lattice spacing [m]
     std::vector<FluidBlock> blocks;
 
     // [numerics]
     KernelType kernel = KernelType::quintic;
-    double h_over_dx = 1.0;       // smoothing length h = h_over_dx * dx
+    double h_over_dx = 1.0; // smoothing length h = h_over_dx * dx
     DensityScheme density = DensityScheme::continuity;
-    double delta_sph = 0.1;       // delta-SPH diffusion coefficient (0 = off; continuity only)
+    double delta_sph = 0.1;          // delta-SPH diffusion coefficient (0 = off; continuity only)
     double artificial_viscosity = 0; // Monaghan alpha (0 = off)
-    double shifting = 0;          // particle-shifting coefficient A (0 = off; 4 = Sun et al. 2017)
-    double cfl = 0.25;            // acoustic CFL number: dt <= cfl*h/(c0 + |v|max)
-    double viscous_cfl = 0.125;   // dt <= viscous_cfl * h^2 / nu
-    double force_cfl = 0.25;      // dt <= force_cfl * sqrt(h/|a|max)
+    double shifting = 0;        // particle-shifting coefficient A (0 = off; 4 = Sun et al. 2017)
+    double cfl = 0.25;          // acoustic CFL number: dt <= cfl*h/(c0 + |v|max)
+    double viscous_cfl = 0.125; // dt <= viscous_cfl * h^2 / nu
+    double force_cfl = 0.25;    // dt <= force_cfl * sqrt(h/|a|max)
     std::optional<double> fixed_dt; // [s]; refused if above the stability limit
 
     // [walls]
     WallModel walls = WallModel::none;
-    Triple tank_lo{}, tank_hi{};  // tank box: walls sit on its faces
+    Triple tank_lo{}, tank_hi{};         // tank box: walls sit on its faces
     std::vector<std::string> tank_faces; // which faces carry walls: "x-","x+","y-","y+","z-","z+"
-    std::vector<WallPlane> planes;  // extra reflective planes
-    double restitution = 1.0;     // reflective walls: normal velocity kept after a bounce
-    bool no_slip = true;          // dummy walls: no-slip (Adami) or free-slip
+    std::vector<WallPlane> planes;       // extra reflective planes
+    double restitution = 1.0;            // reflective walls: normal velocity kept after a bounce
+    bool no_slip = true;                 // dummy walls: no-slip (Adami) or free-slip
 
     // [time]
-    double end_time = 0;          // [s]
-    double output_interval = 0;   // [s] snapshots and probe samples; 0 = only the last state
+    double end_time = 0;        // [s]
+    double output_interval = 0; // [s] snapshots and probe samples; 0 = only the last state
 
     // [output]
     bool snapshots = true;

@@ -26,7 +26,8 @@ void particle_shift(const Neighbourhood<D>& nb, const K& kernel, const ShiftingP
     constexpr Real R = 0.2;
     const AdjacentCells<D> adj = nb.adjacent(c);
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
-        if (P.kind[i] != Kind::fluid) continue;
+        if (P.kind[i] != Kind::fluid)
+            continue;
         Vec<D> s = Vec<D>::Zero();
         Vec<D> grad_c = Vec<D>::Zero();
         Real completeness = 0;
@@ -35,7 +36,8 @@ void particle_shift(const Neighbourhood<D>& nb, const K& kernel, const ShiftingP
             const Real Vj = P.mass[j] / P.rho[j];
             const Real W = kernel.W(r);
             completeness += Vj * W;
-            if (r2 <= 0) return;
+            if (r2 <= 0)
+                return;
             const Vec<D> gradW = grad_W<D>(kernel, dx, r);
             const Real q = W / prm.w_dx;
             s += (1 + R * (q * q) * (q * q)) * Vj * gradW;
@@ -47,7 +49,8 @@ void particle_shift(const Neighbourhood<D>& nb, const K& kernel, const ShiftingP
             dr -= dr.dot(n) * n;
         }
         const Real len = dr.norm();
-        if (len > prm.max_shift) dr *= prm.max_shift / len;
+        if (len > prm.max_shift)
+            dr *= prm.max_shift / len;
         shift_out[i] = dr;
     }
 }
