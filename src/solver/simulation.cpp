@@ -141,8 +141,7 @@ TimeStepLimits Simulation<D>::limits_at_rest() const {
 
 template <int D>
 void Simulation<D>::rebin_and_decompose() {
-    const bool moved = rebin(grid_, P_, ranges_, occupied_);
-    (void)moved;
+    rebin(grid_, P_, ranges_, occupied_);
     std::vector<tasks::OccupiedCell> occ;
     occ.reserve(occupied_.size());
     for (const auto& c : occupied_)
@@ -221,8 +220,6 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
     nb.list = &list;
     const auto& cells = topo_.cells[static_cast<std::size_t>(group)];
     const StageKind kind = stage_kinds_[static_cast<std::size_t>(stage)];
-    if (density_only_ && kind != StageKind::density)
-        return;
     switch (kind) {
     case StageKind::density:
         for (CellIndex c : cells) {
@@ -345,13 +342,6 @@ std::vector<std::string> Simulation<D>::stage_names() const {
     for (const auto& spec : graph_->stages())
         names.push_back(spec.name);
     return names;
-}
-
-template <int D>
-void Simulation<D>::compute_density_only() {
-    density_only_ = true;
-    graph_->run();
-    density_only_ = false;
 }
 
 template class Simulation<2>;

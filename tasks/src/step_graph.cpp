@@ -19,7 +19,6 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
       groups_(static_cast<int>(neighbours.size())), body_(std::move(body)) {
     const std::size_t n = stages_.size() * static_cast<std::size_t>(groups_);
     last_seconds_.assign(n, 0.0);
-    stage_total_.assign(stages_.size(), 0.0);
     impl_->nodes.reserve(n);
     for (int s = 0; s < stage_count(); ++s)
         for (int g = 0; g < groups_; ++g) {
@@ -37,16 +36,13 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
     };
     for (int g = 0; g < groups_; ++g) {
         tbb::flow::make_edge(impl_->start, node(0, g));
-        ++edges_;
     }
     for (int s = 1; s < stage_count(); ++s)
         for (int g = 0; g < groups_; ++g) {
             tbb::flow::make_edge(node(s - 1, g), node(s, g));
-            ++edges_;
             if (stages_[static_cast<std::size_t>(s)].reach == Reach::neighbourhood)
                 for (int nb : neighbours_[static_cast<std::size_t>(g)]) {
                     tbb::flow::make_edge(node(s - 1, nb), node(s, g));
-                    ++edges_;
                 }
         }
 }
@@ -61,10 +57,6 @@ void StepGraph::run() {
         impl_->graph.reset();
         throw;
     }
-    for (int s = 0; s < stage_count(); ++s)
-        for (int g = 0; g < groups_; ++g)
-            stage_total_[static_cast<std::size_t>(s)] +=
-                last_seconds_[static_cast<std::size_t>(s * groups_ + g)];
 }
 
 } // namespace sluice::tasks

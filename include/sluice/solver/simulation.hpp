@@ -54,10 +54,6 @@ public:
     // Seconds spent in rebinning and re-decomposition between steps, summed over the run.
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
 
-    // Runs only the first stage (density + EOS) over the graph on the current positions;
-    // used by tests comparing task-graph sums with brute force.
-    void compute_density_only();
-
 private:
     void rebin_and_decompose();
     void build_graph();
@@ -88,7 +84,6 @@ private:
     std::vector<StageKind> stage_kinds_;
     int decompositions_ = 0;
     int target_groups_ = 1;
-    bool density_only_ = false;
 
     // Per-group results of the drift stage.
     std::vector<TimeStepLimits> group_limits_;

@@ -42,13 +42,10 @@ public:
     [[nodiscard]] const std::vector<StageSpec>& stages() const { return stages_; }
     [[nodiscard]] const std::vector<std::vector<int>>& neighbours() const { return neighbours_; }
 
-    // Busy seconds of each (stage, group) node in the last run; and the cumulative busy
-    // seconds per stage over all runs.
+    // Busy seconds of each (stage, group) node in the last run.
     [[nodiscard]] double node_seconds(int stage, int group) const {
         return last_seconds_[static_cast<std::size_t>(stage * groups_ + group)];
     }
-    [[nodiscard]] const std::vector<double>& stage_seconds_total() const { return stage_total_; }
-    [[nodiscard]] std::size_t edge_count() const { return edges_; }
 
 private:
     struct Impl;
@@ -56,10 +53,8 @@ private:
     std::vector<StageSpec> stages_;
     std::vector<std::vector<int>> neighbours_;
     int groups_ = 0;
-    std::size_t edges_ = 0;
     Body body_;
     std::vector<double> last_seconds_;
-    std::vector<double> stage_total_;
 };
 
 } // namespace sluice::tasks
