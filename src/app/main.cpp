@@ -36,18 +36,6 @@ std::string human_bytes(double bytes) {
     return fmt::format("{:.1f} {}", bytes, units[u]);
 }
 
-const char* kernel_name(sluice::KernelType k) {
-    switch (k) {
-    case sluice::KernelType::quintic:
-        return "quintic";
-    case sluice::KernelType::wendland_c2:
-        return "wendland_c2";
-    case sluice::KernelType::cubic_spline:
-        return "cubic_spline";
-    }
-    return "?";
-}
-
 void print_info(const sluice::CaseConfig& cfg, const sluice::CaseInfo& info) {
     fmt::print("case        {}  ({})\n", cfg.name, cfg.source_file);
     if (!cfg.description.empty())
@@ -58,7 +46,7 @@ void print_info(const sluice::CaseConfig& cfg, const sluice::CaseInfo& info) {
     fmt::print("memory      ~{} (particle state)\n", human_bytes(info.memory_bytes));
     fmt::print("h           {:.6g} m  (dx = {:.6g} m, h/dx = {:.6g})\n", info.h, cfg.dx,
                cfg.h_over_dx);
-    fmt::print("kernel      {}, support {:.6g} m\n", kernel_name(cfg.kernel), info.support);
+    fmt::print("support     {:.6g} m (kernel: see physics)\n", info.support);
     if (cfg.fixed_dt)
         fmt::print("dt          {:.4g} s fixed  (stable estimate {:.4g} s)\n", *cfg.fixed_dt,
                    info.dt_estimate);
