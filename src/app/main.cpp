@@ -4,6 +4,7 @@
 #include "sluice/io/case_reader.hpp"
 #include "sluice/io/errors.hpp"
 #include "sluice/solver/run.hpp"
+#include "sluice/tasks/comm.hpp"
 #include "sluice/version.hpp"
 
 #define TBB_PREVIEW_WAITING_FOR_WORKERS 1
@@ -14,6 +15,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,7 +78,10 @@ void add_case_options(CLI::App* cmd, std::string& case_path, std::vector<std::st
 
 // Reads the case and runs or describes it; returns the process exit code.
 int execute(bool run_requested, const std::string& case_path, const std::vector<std::string>& sets,
-            const std::string& out_dir, int threads, bool quiet, bool verbose) {
+            const std::string& out_dir, int threads, bool quiet, bool verbose,
+            const std::string& trace) {
+    const sluice::tasks::Comm world = sluice::tasks::Comm::world();
+    const bool root = world.rank() == 0;
     try {
         // Everything is validated here, before the solver creates the results folder.
         const sluice::CaseConfig cfg = sluice::read_case(case_path, sets);
@@ -86,28 +91,46 @@ int execute(bool run_requested, const std::string& case_path, const std::vector<
             opts.threads = threads;
             opts.quiet = quiet;
             opts.verbose = verbose;
+            opts.trace_path = trace;
             const sluice::RunResult result = sluice::run_case(cfg, opts);
-            if (!quiet)
+            if (!quiet && root)
                 fmt::print(stderr,
                            "sluice: done: {} steps to t = {:.6g} s in {:.1f} s; results in {}\n",
                            result.steps, result.simulated_time, result.wall_seconds, opts.out_dir);
-        } else {
+        } else if (root) {
             print_info(cfg, sluice::describe_case(cfg));
         }
     } catch (const sluice::CaseError& e) {
-        fmt::print(stderr, "sluice: error: {}\n", e.what());
+        // Every rank reads the same case and refuses it the same way.
+        if (root)
+            fmt::print(stderr, "sluice: error: {}\n", e.what());
         return kExitCaseError;
     } catch (const sluice::RunError& e) {
-        fmt::print(stderr, "sluice: error: the run failed: {}\n", e.what());
+        // Raised on every rank together (the failure is part of the step's reduction).
+        if (root)
+            fmt::print(stderr, "sluice: error: the run failed: {}\n", e.what());
         return kExitRunError;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "sluice: error: {}\n", e.what());
+        fmt::print(stderr, "sluice: error: {}{}\n",
+                   world.parallel() ? fmt::format("rank {}: ", world.rank()) : std::string(),
+                   e.what());
+        // Only this rank knows: take the others down instead of leaving them waiting.
+        if (world.parallel())
+            world.abort(kExitFailure);
         return kExitFailure;
     }
     return 0;
 }
 
 int main(int argc, char** argv) {
+    // MPI first (it may rewrite argv); without mpirun this is a one-rank world.
+    std::optional<sluice::tasks::MpiSession> mpi;
+    try {
+        mpi.emplace(&argc, &argv);
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "sluice: error: {}\n", e.what());
+        return kExitFailure;
+    }
     CLI::App app{"sluice: particle (SPH) solver for free-surface flow", "sluice"};
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
         return fmt::format("sluice: error: {}\nRun with --help for more information.\n", e.what());
@@ -119,12 +142,17 @@ int main(int argc, char** argv) {
     std::vector<std::string> sets;
     int threads = 0;
     bool quiet = false, verbose = false;
+    std::string trace;
 
     CLI::App* run = app.add_subcommand("run", "Run a case to its end time");
     add_case_options(run, case_path, sets);
     run->add_option("--out", out_dir, "Results folder (default: results/<case name>)");
     run->add_option("--threads", threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 65536));
+    run->add_option("--trace", trace,
+                    "Write a Chrome/Perfetto trace of every task and message (JSON; open in "
+                    "ui.perfetto.dev or chrome://tracing)")
+        ->type_name("FILE.json");
     auto* quiet_flag = run->add_flag("--quiet,-q", quiet, "No progress output");
     run->add_flag("--verbose,-v", verbose, "Detailed log")->excludes(quiet_flag);
 
@@ -140,7 +168,13 @@ int main(int argc, char** argv) {
 
     // Join oneTBB's worker threads before exit (sanitizers otherwise report their state).
     tbb::task_scheduler_handle workers{tbb::attach{}};
-    const int code = execute(run->parsed(), case_path, sets, out_dir, threads, quiet, verbose);
-    tbb::finalize(workers, std::nothrow);
+    const int code =
+        execute(run->parsed(), case_path, sets, out_dir, threads, quiet, verbose, trace);
+    if (sluice::tasks::Comm::world().parallel())
+        // oneTBB 2021.8 can wait forever in finalize() for a worker that an arena fed from
+        // outside (the MPI main thread) left asleep; the workers die with the process anyway.
+        workers.release();
+    else
+        tbb::finalize(workers, std::nothrow);
     return code;
 }

@@ -46,7 +46,9 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"time", {"end_time", "output_interval"}},
     {"output", {"snapshots", "fields"}},
     {"probes", {"name", "type", "position", "x", "interval"}},
-    {"runtime", {"particles_per_group"}},
+    {"runtime",
+     {"particles_per_group", "rebalance_threshold", "rebalance_window", "rebalance_every",
+      "balance_cost", "initial_decomposition"}},
 };
 const std::set<std::string, std::less<>> kArrayTables = {"blocks", "probes", "walls.planes"};
 
@@ -524,6 +526,10 @@ const std::vector<std::pair<std::string, KernelType>> kKernels = {
     {"cubic_spline", KernelType::cubic_spline}};
 const std::vector<std::pair<std::string, DensityScheme>> kDensity = {
     {"summation", DensityScheme::summation}, {"continuity", DensityScheme::continuity}};
+const std::vector<std::pair<std::string, BalanceCost>> kBalanceCost = {
+    {"time", BalanceCost::time}, {"particles", BalanceCost::particles}};
+const std::vector<std::pair<std::string, InitialDecomposition>> kInitialDecomposition = {
+    {"balanced", InitialDecomposition::balanced}, {"key-range", InitialDecomposition::key_range}};
 const std::vector<std::pair<std::string, EosType>> kEos = {{"linear", EosType::linear},
                                                            {"tait", EosType::tait}};
 const std::vector<std::pair<std::string, WallModel>> kWalls = {
@@ -866,6 +872,21 @@ void read_runtime(const Section& s, CaseConfig& c) {
     s.require(n >= 1 && n <= std::numeric_limits<int>::max(), "particles_per_group",
               fmt::format("must be between 1 and {}, got {}", std::numeric_limits<int>::max(), n));
     c.particles_per_group = static_cast<int>(n);
+    c.rebalance_threshold = s.number("rebalance_threshold", 0.10);
+    s.require(
+        c.rebalance_threshold > 0 && c.rebalance_threshold <= 10, "rebalance_threshold",
+        fmt::format("must be in (0, 10] (a fraction of the mean), got {}", c.rebalance_threshold));
+    const auto window = s.integer("rebalance_window").value_or(10);
+    s.require(window >= 1 && window <= 1000000, "rebalance_window",
+              fmt::format("must be between 1 and 1000000 steps, got {}", window));
+    c.rebalance_window = static_cast<int>(window);
+    const auto every = s.integer("rebalance_every").value_or(0);
+    s.require(every >= 0 && every <= 1000000000, "rebalance_every",
+              fmt::format("must be >= 0 steps (0 = only when unbalanced), got {}", every));
+    c.rebalance_every = static_cast<int>(every);
+    c.balance_cost = s.choice("balance_cost", BalanceCost::time, kBalanceCost);
+    c.initial_decomposition =
+        s.choice("initial_decomposition", InitialDecomposition::balanced, kInitialDecomposition);
 }
 
 // Lattice sites of all blocks; refuses cases that would not fit any sensible machine.

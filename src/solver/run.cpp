@@ -16,9 +16,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace sluice {
 
@@ -43,8 +45,7 @@ std::size_t bytes_per_particle(int dim) {
 }
 
 template <int D>
-double probe_value(const Simulation<D>& sim, const ProbeConfig& probe) {
-    const auto& P = sim.particles();
+double probe_value(const Simulation<D>& sim, const Particles<D>& P, const ProbeConfig& probe) {
     const double dx = sim.config().dx;
     switch (probe.type) {
     case ProbeType::pressure: {
@@ -61,18 +62,117 @@ double probe_value(const Simulation<D>& sim, const ProbeConfig& probe) {
     return std::nan("");
 }
 
+// Per-rank profile as a flat list of numbers (same layout on every rank).
+template <int D>
+std::vector<double> profile_numbers(const Simulation<D>& sim) {
+    const auto& pr = sim.profile();
+    std::vector<double> v(pr.stage_busy.begin(), pr.stage_busy.end());
+    v.push_back(pr.halo_pack_busy);
+    v.push_back(pr.busy());
+    v.push_back(pr.graph_wall);
+    v.push_back(pr.between_wall);
+    v.push_back(pr.comm);
+    v.push_back(pr.exposed);
+    v.push_back(static_cast<double>(tasks::Comm::bytes_sent()));
+    v.push_back(static_cast<double>(sim.owned()));
+    return v;
+}
+
+// The end-of-run table (rank 0) and its JSON form for summary.json.
+nlohmann::json parallel_report(const std::vector<std::string>& stages,
+                               const std::vector<std::vector<double>>& per_rank, bool print) {
+    const std::size_t S = stages.size();
+    nlohmann::json ranks = nlohmann::json::array();
+    std::vector<double> busy;
+    double comm = 0, exposed = 0, bytes = 0;
+    std::vector<double> stage_total(S, 0.0);
+    if (print) {
+        std::string head = "rank";
+        for (const auto& s : stages)
+            head += fmt::format(" {:>9}", s);
+        fmt::print(stderr, "{} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>10}\n", head, "halo", "busy",
+                   "comm", "hidden", "idle-msg", "overlap", "sent");
+    }
+    for (std::size_t r = 0; r < per_rank.size(); ++r) {
+        const auto& v = per_rank[r];
+        nlohmann::json j;
+        nlohmann::json st = nlohmann::json::object();
+        for (std::size_t s = 0; s < S; ++s) {
+            st[stages[s]] = v[s];
+            stage_total[s] += v[s];
+        }
+        const double halo = v[S], b = v[S + 1], gw = v[S + 2], bw = v[S + 3], c = v[S + 4],
+                     x = v[S + 5], sent = v[S + 6], owned = v[S + 7];
+        j["rank"] = r;
+        j["stage_busy_seconds"] = st;
+        j["halo_pack_seconds"] = halo;
+        j["busy_seconds"] = b;
+        j["graph_wall_seconds"] = gw;
+        j["between_steps_wall_seconds"] = bw;
+        j["communication_seconds"] = c;
+        j["idle_waiting_for_messages_seconds"] = x;
+        j["hidden_communication_seconds"] = c - x;
+        j["overlap_efficiency"] = c > 0 ? (c - x) / c : 1.0;
+        j["bytes_sent"] = sent;
+        j["particles_at_end"] = owned;
+        ranks.push_back(j);
+        busy.push_back(b);
+        comm += c;
+        exposed += x;
+        bytes += sent;
+        if (print) {
+            std::string line = fmt::format("{:>4}", r);
+            for (std::size_t s = 0; s < S; ++s)
+                line += fmt::format(" {:>8.2f}s", v[s]);
+            fmt::print(stderr,
+                       "{} {:>8.2f}s {:>8.2f}s {:>8.3f}s {:>8.3f}s {:>8.3f}s {:>7.1f}% {:>10}\n",
+                       line, halo, b, c, c - x, x, 100 * (c > 0 ? (c - x) / c : 1.0),
+                       fmt::format("{:.1f} MB", sent / 1e6));
+        }
+    }
+    nlohmann::json total;
+    nlohmann::json st = nlohmann::json::object();
+    for (std::size_t s = 0; s < S; ++s)
+        st[stages[s]] = stage_total[s];
+    total["stage_busy_seconds"] = st;
+    total["communication_seconds"] = comm;
+    total["idle_waiting_for_messages_seconds"] = exposed;
+    total["hidden_communication_seconds"] = comm - exposed;
+    total["overlap_efficiency"] = comm > 0 ? (comm - exposed) / comm : 1.0;
+    total["load_imbalance"] = tasks::imbalance(busy);
+    total["bytes_sent"] = bytes;
+    if (print)
+        fmt::print(stderr,
+                   "total: overlap efficiency {:.1f}%, load imbalance (max/mean busy) {:.3f}, "
+                   "{:.1f} MB sent\n",
+                   100 * (comm > 0 ? (comm - exposed) / comm : 1.0), tasks::imbalance(busy),
+                   bytes / 1e6);
+    nlohmann::json out;
+    out["ranks"] = ranks;
+    out["total"] = total;
+    return out;
+}
+
 template <int D>
 RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     namespace fs = std::filesystem;
     using Clock = std::chrono::steady_clock;
-    Simulation<D> sim(cfg); // refuses an unrunnable case before anything is written
+    SimulationOptions so;
+    so.threads = threads;
+    so.trace = !opts.trace_path.empty();
+    so.log_rebalances = !opts.quiet;
+    Simulation<D> sim(cfg, so); // refuses an unrunnable case before anything is written
+    const bool root = sim.comm().rank() == 0;
 
-    fs::create_directories(opts.out_dir);
-    fs::remove(fs::path(opts.out_dir) / "summary.json"); // an old summary would look complete
     std::unique_ptr<SnapshotWriter<D>> snapshots;
-    if (cfg.snapshots)
-        snapshots = std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
-    ProbeWriter probe_files(opts.out_dir, cfg.probes);
+    std::unique_ptr<ProbeWriter> probe_files;
+    if (root) {
+        fs::create_directories(opts.out_dir);
+        fs::remove(fs::path(opts.out_dir) / "summary.json"); // an old summary would look complete
+        if (cfg.snapshots)
+            snapshots = std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
+        probe_files = std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes);
+    }
 
     const double out_every = cfg.output_interval > 0 ? cfg.output_interval : cfg.end_time;
     std::vector<double> probe_every, probe_next;
@@ -82,46 +182,68 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     }
     double out_next = 0.0;
     double last_output_time = -1;
+    // Every rank takes the same decisions (same time); the particles are gathered on rank 0
+    // only when something is due.
     auto sample = [&](bool force) {
         const double t = sim.time();
+        const double eps = 1e-12 * cfg.end_time;
+        bool probes_due = false;
         for (std::size_t k = 0; k < cfg.probes.size(); ++k)
-            if (force || t >= probe_next[k] - 1e-12 * cfg.end_time) {
-                probe_files.write(k, t, probe_value(sim, cfg.probes[k]));
-                while (probe_next[k] <= t + 1e-12 * cfg.end_time)
+            probes_due = probes_due || force || t >= probe_next[k] - eps;
+        const bool snap_due =
+            (force || t >= out_next - eps) && cfg.snapshots && t != last_output_time;
+        std::optional<Particles<D>> all;
+        if (probes_due || snap_due)
+            all = sim.gather_particles();
+        for (std::size_t k = 0; k < cfg.probes.size(); ++k)
+            if (force || t >= probe_next[k] - eps) {
+                if (root)
+                    probe_files->write(k, t, probe_value(sim, *all, cfg.probes[k]));
+                while (probe_next[k] <= t + eps)
                     probe_next[k] += probe_every[k];
             }
-        if (force || t >= out_next - 1e-12 * cfg.end_time) {
-            if (snapshots && t != last_output_time)
-                snapshots->write(sim.particles(), t, sim.steps());
+        if (force || t >= out_next - eps) {
+            if (snap_due && root)
+                snapshots->write(*all, t, sim.steps());
             last_output_time = t;
-            while (out_next <= t + 1e-12 * cfg.end_time)
+            while (out_next <= t + eps)
                 out_next += out_every;
         }
     };
 
     RunResult result;
-    result.particles = sim.particles().size();
-    result.fluid_particles = sim.particles().count(Kind::fluid);
-    result.mass_initial = sim.particles().total_mass();
+    {
+        const Particles<D> all = sim.gather_particles();
+        result.particles = all.size();
+        result.fluid_particles = all.count(Kind::fluid);
+        result.mass_initial = all.total_mass();
+    }
+    std::uint64_t total_particles = result.particles;
+    {
+        // Rank 0 knows the count; the others need it for the progress rate.
+        const std::string s = sim.comm().broadcast(std::to_string(total_particles), 0);
+        total_particles = std::stoull(s);
+    }
 
-    Progress progress(cfg.end_time, opts.quiet);
+    Progress progress(cfg.end_time, opts.quiet || !root);
     const auto t0 = Clock::now();
     sample(false);
     while (sim.time() < cfg.end_time * (1 - 1e-12)) {
         try {
             sim.step();
         } catch (const RunError& e) {
-            // The state is the last good one: the failing step never swapped its buffers in.
+            // Every rank got the error from the same step; the state is the last good one
+            // (the failing step never swapped its buffers in).
             std::string where;
+            const Particles<D> all = sim.gather_particles();
             if (snapshots)
-                where = ", last good state in " +
-                        snapshots->write(sim.particles(), sim.time(), sim.steps());
+                where = ", last good state in " + snapshots->write(all, sim.time(), sim.steps());
             progress.finish();
             throw RunError(std::string(e.what()) + where);
         }
         const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
         progress.update(sim.steps(), sim.time(), sim.dt(),
-                        static_cast<double>(result.particles) * static_cast<double>(sim.steps()) /
+                        static_cast<double>(total_particles) * static_cast<double>(sim.steps()) /
                             wall);
         sample(false);
     }
@@ -132,22 +254,51 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     result.steps = sim.steps();
     result.simulated_time = sim.time();
-    result.particle_steps_per_second = static_cast<double>(result.particles) *
+    result.particle_steps_per_second = static_cast<double>(total_particles) *
                                        static_cast<double>(result.steps) / result.wall_seconds;
-    result.mass_final = sim.particles().total_mass();
+    result.mass_final = sim.gather_particles().total_mass();
+    if (!opts.trace_path.empty())
+        sim.write_trace(opts.trace_path);
+
+    // Per-rank profile to rank 0.
+    const auto mine = profile_numbers(sim);
+    const auto gathered = sim.comm().gather(std::span<const std::byte>(
+        reinterpret_cast<const std::byte*>(mine.data()), mine.size() * sizeof(double)));
+    double rebin_max = sim.rebin_seconds_total();
+    if (!root)
+        return result;
+
+    std::vector<std::vector<double>> per_rank;
+    for (const auto& b : gathered) {
+        std::vector<double> v(b.size() / sizeof(double));
+        std::memcpy(v.data(), b.data(), b.size());
+        per_rank.push_back(std::move(v));
+    }
+    const auto names = sim.stage_names();
+    const nlohmann::json parallel =
+        parallel_report(names, per_rank, !opts.quiet && sim.comm().parallel());
 
     nlohmann::json extra;
-    nlohmann::json stages = nlohmann::json::object();
-    const auto names = sim.stage_names();
-    for (std::size_t s = 0; s < names.size() && s < sim.stage_busy_seconds().size(); ++s)
-        stages[names[s]] = sim.stage_busy_seconds()[s];
     const auto& graph = sim.graph();
-    extra["stage_busy_seconds"] = stages;
-    extra["rebin_seconds"] = sim.rebin_seconds_total();
+    extra["stage_busy_seconds"] = parallel["total"]["stage_busy_seconds"];
+    extra["rebin_seconds"] = rebin_max;
     extra["cell_groups"] = graph.group_count();
     extra["decompositions"] = sim.decompositions();
     extra["last_dt"] = sim.dt();
-    write_summary(opts.out_dir, cfg, result, threads, 1, extra);
+    extra["parallel"] = parallel;
+    nlohmann::json rebal = nlohmann::json::array();
+    for (const auto& r : sim.rebalances())
+        rebal.push_back({{"step", r.step},
+                         {"imbalance_before", r.imbalance_before},
+                         {"predicted_after", r.predicted_after},
+                         {"particles_moved", r.particles_moved},
+                         {"seconds", r.seconds}});
+    extra["rebalances"] = rebal;
+    nlohmann::json hist = nlohmann::json::array();
+    for (const auto& h : sim.balance_history())
+        hist.push_back({{"step", h.step}, {"imbalance", h.imbalance}});
+    extra["imbalance_history"] = hist;
+    write_summary(opts.out_dir, cfg, result, threads, sim.comm().size(), extra);
     return result;
 }
 
@@ -229,8 +380,10 @@ CaseInfo describe_case(const CaseConfig& cfg) {
 
 RunResult run_case(const CaseConfig& cfg, const RunOptions& opts) {
     const int threads = opts.threads > 0 ? opts.threads : tbb::info::default_concurrency();
+    // On several ranks the main thread drives MPI: the arena has one slot more than workers.
+    const bool parallel = tasks::Comm::world().parallel();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
-                              static_cast<std::size_t>(threads));
+                              static_cast<std::size_t>(threads + (parallel ? 1 : 0)));
     if (cfg.dimension == 2)
         return run_impl<2>(cfg, opts, threads);
     return run_impl<3>(cfg, opts, threads);

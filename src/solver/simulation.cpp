@@ -6,11 +6,16 @@
 #include "sluice/physics/integrator.hpp"
 #include "sluice/physics/shifting.hpp"
 
+#include "particle_messages.hpp"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <fmt/format.h>
 
 namespace sluice {
@@ -52,9 +57,162 @@ std::vector<Plane<D>> reflective_planes(const CaseConfig& cfg) {
 
 } // namespace
 
+// The halo exchanges of one step (docs/ARCHITECTURE.md, "Halo exchanges"). Each carries what
+// the next stage reads of particles owned by a peer:
+//   state     (start of step)  id, kind, x, v, rho, mass      -> density, walls, accel
+//   pressure  (after density)  p, and rho (summation) or the   -> walls, accel, drift
+//                              renormalised grad rho (delta-SPH)
+//   walls     (after walls)    wall particles: p, rho, mass, v_bc -> accel
+//   velocity  (after kick)     fluid particles: v^{n+1/2}       -> drift (continuity)
 template <int D>
-Simulation<D>::Simulation(const CaseConfig& cfg)
-    : cfg_(cfg), kernel_(make_kernel<D>(cfg.kernel, cfg.h_over_dx * cfg.dx)) {
+class Simulation<D>::Halo final : public tasks::HaloData {
+public:
+    enum class What { state, pressure, walls, velocity };
+    explicit Halo(Simulation& s) : s_(s) {}
+    std::vector<What> what; // per exchange of the graph
+
+    [[nodiscard]] std::size_t recv_bytes(int e, int p) const override {
+        const auto k = static_cast<std::size_t>(p);
+        const std::size_t n = s_.recv_count_[k], w = s_.recv_walls_[k];
+        switch (what[static_cast<std::size_t>(e)]) {
+        case What::state:
+            return n * state_bytes;
+        case What::pressure:
+            return n * pressure_bytes();
+        case What::walls:
+            return w * wall_bytes;
+        case What::velocity:
+            return (n - w) * sizeof(Vec<D>);
+        }
+        return 0;
+    }
+
+    void pack(int e, int p, tasks::Bytes& out) override {
+        using messages::put_raw;
+        const Particles<D>& P = s_.P_;
+        const What kind = what[static_cast<std::size_t>(e)];
+        out.reserve(recv_like_bytes(kind, static_cast<std::size_t>(p)));
+        for (CellIndex c : s_.send_cells_[static_cast<std::size_t>(p)])
+            for (std::uint32_t i = s_.ranges_.begin[c]; i < s_.ranges_.end[c]; ++i)
+                switch (kind) {
+                case What::state:
+                    put_raw(out, P.id[i]);
+                    put_raw(out, P.kind[i]);
+                    put_raw(out, P.x[i]);
+                    put_raw(out, P.v[i]);
+                    put_raw(out, P.rho[i]);
+                    put_raw(out, P.mass[i]);
+                    break;
+                case What::pressure:
+                    put_raw(out, P.p[i]);
+                    if (summation())
+                        put_raw(out, P.rho[i]);
+                    if (gradient())
+                        put_raw(out, P.grad_rho[i]);
+                    break;
+                case What::walls:
+                    if (P.kind[i] != Kind::wall)
+                        break;
+                    put_raw(out, P.p[i]);
+                    put_raw(out, P.rho[i]);
+                    put_raw(out, P.mass[i]);
+                    put_raw(out, P.v_bc[i]);
+                    break;
+                case What::velocity:
+                    if (P.kind[i] == Kind::fluid)
+                        put_raw(out, P.v_half[i]);
+                    break;
+                }
+    }
+
+    void unpack(int e, int p, std::span<const std::byte> in) override {
+        using messages::get_raw;
+        Particles<D>& P = s_.P_;
+        const auto k = static_cast<std::size_t>(p);
+        const std::size_t first = s_.recv_offset_[k], last = first + s_.recv_count_[k];
+        std::size_t pos = 0;
+        switch (what[static_cast<std::size_t>(e)]) {
+        case What::state:
+            for (std::size_t i = first; i < last; ++i) {
+                get_raw(in, pos, P.id[i]);
+                get_raw(in, pos, P.kind[i]);
+                get_raw(in, pos, P.x[i]);
+                get_raw(in, pos, P.v[i]);
+                get_raw(in, pos, P.rho[i]);
+                get_raw(in, pos, P.mass[i]);
+            }
+            // The peer sent whole cells in key order: each halo cell is one contiguous run.
+            for (std::size_t i = first; i < last;) {
+                const CellIndex c = s_.grid_.linear(s_.grid_.coords(P.x[i]));
+                std::size_t j = i + 1;
+                while (j < last && s_.grid_.linear(s_.grid_.coords(P.x[j])) == c)
+                    ++j;
+                s_.ranges_.begin[c] = static_cast<std::uint32_t>(i);
+                s_.ranges_.end[c] = static_cast<std::uint32_t>(j);
+                i = j;
+            }
+            break;
+        case What::pressure:
+            for (std::size_t i = first; i < last; ++i) {
+                get_raw(in, pos, P.p[i]);
+                if (summation())
+                    get_raw(in, pos, P.rho[i]);
+                if (gradient())
+                    get_raw(in, pos, P.grad_rho[i]);
+            }
+            break;
+        case What::walls:
+            for (std::size_t i = first; i < last; ++i)
+                if (P.kind[i] == Kind::wall) {
+                    get_raw(in, pos, P.p[i]);
+                    get_raw(in, pos, P.rho[i]);
+                    get_raw(in, pos, P.mass[i]);
+                    get_raw(in, pos, P.v_bc[i]);
+                }
+            break;
+        case What::velocity:
+            for (std::size_t i = first; i < last; ++i)
+                if (P.kind[i] == Kind::fluid)
+                    get_raw(in, pos, P.v_half[i]);
+            break;
+        }
+    }
+
+private:
+    static constexpr std::size_t state_bytes =
+        sizeof(ParticleId) + sizeof(Kind) + 2 * sizeof(Vec<D>) + 2 * sizeof(Real);
+    static constexpr std::size_t wall_bytes = 3 * sizeof(Real) + sizeof(Vec<D>);
+    [[nodiscard]] bool summation() const { return !s_.continuity_; }
+    [[nodiscard]] bool gradient() const { return s_.continuity_ && s_.delta_h_c0_ > 0; }
+    [[nodiscard]] std::size_t pressure_bytes() const {
+        return sizeof(Real) + (summation() ? sizeof(Real) : 0) + (gradient() ? sizeof(Vec<D>) : 0);
+    }
+    [[nodiscard]] std::size_t recv_like_bytes(What kind, std::size_t p) const {
+        const std::size_t n = s_.send_count_[p], w = s_.send_walls_[p];
+        switch (kind) {
+        case What::state:
+            return n * state_bytes;
+        case What::pressure:
+            return n * pressure_bytes();
+        case What::walls:
+            return w * wall_bytes;
+        case What::velocity:
+            return (n - w) * sizeof(Vec<D>);
+        }
+        return 0;
+    }
+    Simulation& s_;
+};
+
+template <int D>
+Simulation<D>::~Simulation() {
+    graph_.reset(); // before the arena and the halo it uses
+}
+
+template <int D>
+Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts)
+    : cfg_(cfg), kernel_(make_kernel<D>(cfg.kernel, cfg.h_over_dx * cfg.dx)),
+      opts_(std::move(opts)), comm_(tasks::Comm::world()) {
     h_ = cfg.h_over_dx * cfg.dx;
     const double support = kernel_support_factor(cfg.kernel) * h_;
     eos_ = Eos{cfg.eos, cfg.rho0, cfg.sound_speed, cfg.gamma, cfg.background_pressure};
@@ -119,13 +277,50 @@ Simulation<D>::Simulation(const CaseConfig& cfg)
     for (std::size_t i = 0; i < P_.size(); ++i)
         u_max_ = std::max(u_max_, P_.v[i].norm());
 
+    // Worker threads of this rank. On several ranks the main thread drives MPI and the
+    // arena gets one slot more for it (run_case raises TBB's global limit to match).
+    const auto allowed = static_cast<int>(
+        tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+    threads_ = opts_.threads > 0 ? opts_.threads
+                                 : std::max(1, std::min(allowed, tbb::info::default_concurrency()) -
+                                                   (comm_.parallel() ? 1 : 0));
+    arena_ = std::make_unique<tbb::task_arena>(threads_ + (comm_.parallel() ? 1 : 0), 1);
+    halo_ = std::make_unique<Halo>(*this);
+    window_busy_.assign(static_cast<std::size_t>(comm_.size()), 0.0);
+
+    distribute_initial_particles();
     const std::size_t n = P_.size();
     const auto per_group = static_cast<std::size_t>(std::max(1, cfg.particles_per_group));
     const int by_size = static_cast<int>((n + per_group - 1) / per_group);
     // Groups are independent of the thread count for results; more groups than threads let
     // TBB balance inside a rank.
-    target_groups_ = std::max(by_size, 4 * tbb::this_task_arena::max_concurrency());
+    target_groups_ = std::max(by_size, 4 * threads_);
     rebin_and_decompose();
+}
+
+template <int D>
+void Simulation<D>::distribute_initial_particles() {
+    if (!comm_.parallel())
+        return;
+    // Every rank generated the same particles; each keeps the cells of its part of the curve.
+    rebin(grid_, P_, ranges_, occupied_);
+    if (cfg_.initial_decomposition == InitialDecomposition::key_range) {
+        layout_ = tasks::cut_ranks_by_key(grid_, comm_.size());
+    } else {
+        std::vector<tasks::CurveUnit> units;
+        units.reserve(occupied_.size());
+        for (const auto& c : occupied_)
+            units.push_back({c.key, static_cast<double>(c.count)});
+        layout_ = tasks::cut_ranks(units, comm_.size());
+    }
+    peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
+    std::vector<std::size_t> keep;
+    for (const auto& c : occupied_)
+        if (layout_.rank_of(c.key) == comm_.rank())
+            for (std::uint32_t i = ranges_.begin[c.cell]; i < ranges_.end[c.cell]; ++i)
+                keep.push_back(i);
+    P_.permute(keep);
+    P_.resize(keep.size());
 }
 
 template <int D>
@@ -141,22 +336,27 @@ TimeStepLimits Simulation<D>::limits_at_rest() const {
 
 template <int D>
 void Simulation<D>::rebin_and_decompose() {
+    // Here P_ holds exactly this rank's particles (no halo).
     rebin(grid_, P_, ranges_, occupied_);
+    owned_ = P_.size();
     std::vector<tasks::OccupiedCell> occ;
     occ.reserve(occupied_.size());
     for (const auto& c : occupied_)
         occ.push_back({c.key, c.cell, static_cast<double>(c.count)});
+    plan_halo();
 
-    // A particle can enter a new cell without changing the sort order, so the occupied set
-    // and the group adjacency are checked every step.
-    bool regroup = !graph_;
-    if (graph_) {
+    // A particle can enter a new cell without changing the sort order, so the occupied set,
+    // the group adjacency and the groups facing each peer are checked every step.
+    bool regroup = !graph_ || force_regroup_;
+    if (!regroup) {
         tasks::assign_cells(occ, topo_);
         const auto needed = tasks::group_adjacency(grid_, occ, topo_);
         regroup = !tasks::adjacency_covers(graph_->neighbours(), needed);
+        if (!regroup && comm_.parallel())
+            regroup = !tasks::adjacency_covers(graph_->halo().boundary, boundary_groups());
         if (!regroup) {
             // Re-cut when a group has drifted far above its share of particles.
-            const double mean = static_cast<double>(P_.size()) / topo_.group_count();
+            const double mean = static_cast<double>(owned_) / topo_.group_count();
             double worst = 0;
             for (const auto& cells : topo_.cells) {
                 double c = 0;
@@ -174,7 +374,198 @@ void Simulation<D>::rebin_and_decompose() {
         topo_.neighbours = tasks::group_adjacency(grid_, occ, topo_);
         build_graph();
         ++decompositions_;
+        force_regroup_ = false;
     }
+}
+
+template <int D>
+void Simulation<D>::plan_halo() {
+    if (!comm_.parallel())
+        return;
+    const double t0 = tasks::clock_seconds();
+    const std::size_t P = peers_.size();
+    std::vector<CellIndex> cells;
+    cells.reserve(occupied_.size());
+    for (const auto& c : occupied_)
+        cells.push_back(c.cell);
+    occupied_targets_ = tasks::halo_targets(grid_, layout_, comm_.rank(), peers_, cells);
+    send_cells_.assign(P, {});
+    send_count_.assign(P, 0);
+    send_walls_.assign(P, 0);
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+        if (occupied_targets_[k].empty())
+            continue;
+        std::size_t walls = 0;
+        for (std::uint32_t i = ranges_.begin[cells[k]]; i < ranges_.end[cells[k]]; ++i)
+            walls += P_.kind[i] == Kind::wall ? 1 : 0;
+        for (int p : occupied_targets_[k]) {
+            const auto pu = static_cast<std::size_t>(p);
+            send_cells_[pu].push_back(cells[k]);
+            send_count_[pu] += occupied_[k].count;
+            send_walls_[pu] += walls;
+        }
+    }
+    // Each peer learns how many particles (and walls) it will receive, so that it can size
+    // its arrays and post exact receives before the step starts.
+    std::vector<tasks::Bytes> out(P), in;
+    for (std::size_t p = 0; p < P; ++p) {
+        tasks::put(out[p], static_cast<std::uint64_t>(send_count_[p]));
+        tasks::put(out[p], static_cast<std::uint64_t>(send_walls_[p]));
+    }
+    comm_.exchange(peers_, out, in, 12);
+    recv_count_.assign(P, 0);
+    recv_walls_.assign(P, 0);
+    recv_offset_.assign(P, 0);
+    std::size_t next = owned_;
+    for (std::size_t p = 0; p < P; ++p) {
+        std::size_t pos = 0;
+        recv_count_[p] = tasks::take<std::uint64_t>(in[p], pos);
+        recv_walls_[p] = tasks::take<std::uint64_t>(in[p], pos);
+        recv_offset_[p] = next;
+        next += recv_count_[p];
+    }
+    P_.resize(next);
+    between_.push_back({"halo counts", -1, true, 16 * P, t0, tasks::clock_seconds()});
+}
+
+template <int D>
+std::vector<std::vector<int>> Simulation<D>::boundary_groups() const {
+    // Groups holding a halo cell of each peer; occupied_ and the concatenated group cell
+    // lists are in the same (key) order.
+    std::vector<std::vector<int>> facing(peers_.size());
+    std::size_t k = 0;
+    for (int g = 0; g < topo_.group_count(); ++g)
+        for (std::size_t c = 0; c < topo_.cells[static_cast<std::size_t>(g)].size(); ++c, ++k)
+            for (int p : occupied_targets_[k]) {
+                auto& f = facing[static_cast<std::size_t>(p)];
+                if (f.empty() || f.back() != g)
+                    f.push_back(g);
+            }
+    return facing;
+}
+
+template <int D>
+void Simulation<D>::migrate_to_neighbours() {
+    // A particle moves less than one cell per step, so it can only enter a peer's cell.
+    const double t0 = tasks::clock_seconds();
+    std::vector<tasks::Bytes> out(peers_.size()), in;
+    std::vector<std::size_t> keep;
+    keep.reserve(P_.size());
+    for (std::size_t i = 0; i < P_.size(); ++i) {
+        const int owner = layout_.rank_of(grid_.morton(grid_.coords(P_.x[i])));
+        if (owner == comm_.rank()) {
+            keep.push_back(i);
+            continue;
+        }
+        const auto it = std::lower_bound(peers_.begin(), peers_.end(), owner);
+        if (it == peers_.end() || *it != owner)
+            throw std::logic_error(fmt::format("particle {} jumped to rank {}, not a neighbour "
+                                               "of rank {}",
+                                               P_.id[i], owner, comm_.rank()));
+        messages::pack_migrant(P_, i, out[static_cast<std::size_t>(it - peers_.begin())]);
+    }
+    comm_.exchange(peers_, out, in, 11);
+    std::size_t bytes = 0;
+    for (const auto& b : out)
+        bytes += b.size();
+    if (keep.size() != P_.size()) {
+        P_.permute(keep);
+        P_.resize(keep.size());
+    }
+    for (const auto& b : in)
+        messages::unpack_migrants<D>(b, P_);
+    between_.push_back({"migrate", -1, true, bytes, t0, tasks::clock_seconds()});
+}
+
+template <int D>
+bool Simulation<D>::maybe_rebalance(const std::vector<double>& busy_per_rank) {
+    for (std::size_t r = 0; r < window_busy_.size(); ++r)
+        window_busy_[r] += busy_per_rank[r];
+    ++window_steps_;
+    ++steps_since_rebalance_;
+    const bool window_full = window_steps_ >= cfg_.rebalance_window;
+    const bool every = cfg_.rebalance_every > 0 && steps_since_rebalance_ >= cfg_.rebalance_every;
+    if (!window_full && !every)
+        return false;
+    const double measured = tasks::imbalance(window_busy_);
+    if (window_full)
+        balance_history_.push_back({steps_, measured});
+    const bool due = every || measured > 1 + cfg_.rebalance_threshold;
+    std::fill(window_busy_.begin(), window_busy_.end(), 0.0);
+    window_steps_ = 0;
+    if (!due)
+        return false;
+
+    // Every rank offers its groups as units of the curve with their measured cost; all ranks
+    // compute the same new cut points from the same gathered list.
+    const double t0 = tasks::clock_seconds();
+    tasks::Bytes mine;
+    for (int g = 0; g < topo_.group_count(); ++g) {
+        const auto& cells = topo_.cells[static_cast<std::size_t>(g)];
+        if (cells.empty())
+            continue;
+        double particles = 0;
+        for (CellIndex c : cells)
+            particles += ranges_.end[c] - ranges_.begin[c];
+        const double cost =
+            cfg_.balance_cost == BalanceCost::time && graph_steps_ > 0
+                ? group_busy_[static_cast<std::size_t>(g)] / static_cast<double>(graph_steps_)
+                : particles;
+        tasks::put(mine, grid_.morton(grid_.unlinear(cells.front())));
+        tasks::put(mine, cost);
+    }
+    std::vector<tasks::CurveUnit> units;
+    for (const auto& b : comm_.all_gather(mine)) {
+        std::size_t pos = 0;
+        while (pos < b.size()) {
+            tasks::CurveUnit u{};
+            u.key = tasks::take<MortonKey>(b, pos);
+            u.cost = tasks::take<double>(b, pos);
+            units.push_back(u);
+        }
+    }
+    const tasks::RankLayout next = tasks::cut_ranks(units, comm_.size());
+    std::vector<double> predicted(static_cast<std::size_t>(comm_.size()), 0.0);
+    for (const auto& u : units)
+        predicted[static_cast<std::size_t>(next.rank_of(u.key))] += u.cost;
+
+    // Every particle goes to its owner under the new cuts.
+    std::vector<tasks::Bytes> out(static_cast<std::size_t>(comm_.size())), in;
+    std::vector<std::size_t> keep;
+    std::uint64_t moved = 0;
+    for (std::size_t i = 0; i < P_.size(); ++i) {
+        const int owner = next.rank_of(grid_.morton(grid_.coords(P_.x[i])));
+        if (owner == comm_.rank()) {
+            keep.push_back(i);
+        } else {
+            messages::pack_migrant(P_, i, out[static_cast<std::size_t>(owner)]);
+            ++moved;
+        }
+    }
+    comm_.all_to_all(out, in);
+    P_.permute(keep);
+    P_.resize(keep.size());
+    for (const auto& b : in)
+        messages::unpack_migrants<D>(b, P_);
+    std::uint64_t moved_total = 0;
+    for (const auto& b : comm_.all_gather(std::span<const std::byte>(
+             reinterpret_cast<const std::byte*>(&moved), sizeof(moved)))) {
+        std::size_t pos = 0;
+        moved_total += tasks::take<std::uint64_t>(b, pos);
+    }
+    layout_ = next;
+    peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
+    force_regroup_ = true;
+    steps_since_rebalance_ = 0;
+    const double t1 = tasks::clock_seconds();
+    rebalances_.push_back({steps_, measured, tasks::imbalance(predicted), moved_total, t1 - t0});
+    between_.push_back({"rebalance", -1, true, 0, t0, t1});
+    if (opts_.log_rebalances && comm_.rank() == 0)
+        fmt::print(stderr,
+                   "sluice: rebalance at step {}: imbalance {:.3f} -> {:.3f} (predicted), {} "
+                   "particles moved, {:.1f} ms\n",
+                   steps_, measured, tasks::imbalance(predicted), moved_total, (t1 - t0) * 1e3);
+    return true;
 }
 
 template <int D>
@@ -199,8 +590,38 @@ void Simulation<D>::build_graph() {
     group_failure_.assign(topo_.neighbours.size(), {});
     group_speed_.assign(topo_.neighbours.size(), 0.0);
     lists_.resize(topo_.neighbours.size());
+    group_busy_.assign(topo_.neighbours.size(), 0.0);
+    graph_steps_ = 0;
+
+    tasks::HaloWiring wiring;
+    if (comm_.parallel()) {
+        using What = typename Halo::What;
+        auto stage_of = [&](StageKind k) {
+            return static_cast<int>(std::find(stage_kinds_.begin(), stage_kinds_.end(), k) -
+                                    stage_kinds_.begin());
+        };
+        halo_->what.clear();
+        wiring.exchanges.push_back({"state", -1});
+        halo_->what.push_back(What::state);
+        wiring.exchanges.push_back({"pressure", stage_of(StageKind::density)});
+        halo_->what.push_back(What::pressure);
+        if (cfg_.walls == WallModel::dummy) {
+            wiring.exchanges.push_back({"walls", stage_of(StageKind::walls)});
+            halo_->what.push_back(What::walls);
+        }
+        if (continuity_) {
+            wiring.exchanges.push_back({"velocity", stage_of(StageKind::kick)});
+            halo_->what.push_back(What::velocity);
+        }
+        wiring.peers = peers_;
+        wiring.boundary = boundary_groups();
+        wiring.data = halo_.get();
+    }
+    graph_.reset(); // the old graph lives in the arena too
     graph_ = std::make_unique<tasks::StepGraph>(
-        specs, topo_.neighbours, [this](int stage, int group) { run_stage(stage, group); });
+        specs, topo_.neighbours, [this](int stage, int group) { run_stage(stage, group); },
+        std::move(wiring), arena_.get());
+    graph_->inject_receive_delay(receive_delay_);
 }
 
 template <int D>
@@ -311,29 +732,122 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
 
 template <int D>
 void Simulation<D>::step() {
+    graph_->inject_receive_delay(receive_delay_);
     graph_->run();
+    const double t_graph = tasks::clock_seconds();
     // The stage layout is fixed for a case, so totals carry over when the graph is rebuilt.
     stage_busy_.resize(static_cast<std::size_t>(graph_->stage_count()), 0.0);
     for (int s = 0; s < graph_->stage_count(); ++s)
-        for (int g = 0; g < graph_->group_count(); ++g)
-            stage_busy_[static_cast<std::size_t>(s)] += graph_->node_seconds(s, g);
-    for (const std::string& f : group_failure_)
-        if (!f.empty())
-            throw RunError(f);
+        for (int g = 0; g < graph_->group_count(); ++g) {
+            const double t = graph_->node_seconds(s, g);
+            stage_busy_[static_cast<std::size_t>(s)] += t;
+            group_busy_[static_cast<std::size_t>(g)] += t;
+        }
+    ++graph_steps_;
+    profile_.add_step(*graph_, between_);
+    if (opts_.trace) {
+        if (!trace_)
+            trace_ = std::make_unique<tasks::TraceRecorder>(comm_.rank(), stage_names(),
+                                                            opts_.trace_max_events);
+        trace_->add_step(steps_ + 1, *graph_, between_);
+    }
+    between_.clear();
+
+    reduce_step_results(); // throws RunError on every rank if a particle failed on any
     P_.swap_buffers();
-    TimeStepLimits lim;
-    for (const auto& l : group_limits_)
-        lim = min(lim, l);
-    limits_ = lim;
-    u_max_ = *std::max_element(group_speed_.begin(), group_speed_.end());
+    P_.resize(owned_); // drop the halo copies: they are received afresh next step
     time_ += dt_;
     ++steps_;
     dt_prev_ = dt_;
     if (!cfg_.fixed_dt)
-        dt_ = lim.min();
+        dt_ = limits_.min();
     const auto t0 = std::chrono::steady_clock::now();
+    if (comm_.parallel() && !maybe_rebalance(last_busy_))
+        migrate_to_neighbours();
     rebin_and_decompose();
     rebin_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    profile_.between_wall += tasks::clock_seconds() - t_graph;
+}
+
+template <int D>
+void Simulation<D>::reduce_step_results() {
+    TimeStepLimits lim;
+    for (const auto& l : group_limits_)
+        lim = min(lim, l);
+    Real speed = 0;
+    for (Real s : group_speed_)
+        speed = std::max(speed, s);
+    const std::string* failure = nullptr;
+    for (const std::string& f : group_failure_)
+        if (!f.empty() && failure == nullptr)
+            failure = &f;
+    double busy = 0;
+    for (const auto& r : graph_->task_records())
+        busy += r.end - r.start;
+    if (!comm_.parallel()) {
+        if (failure != nullptr)
+            throw RunError(*failure);
+        limits_ = lim;
+        u_max_ = speed;
+        last_busy_.assign(1, busy);
+        return;
+    }
+    // One small all-gather per step: the time-step limits, the largest speed, failures and
+    // the busy time the balancer needs. Every rank reduces the same list the same way.
+    struct Report {
+        double acoustic, viscous, force, speed, busy;
+        std::int64_t failed;
+    };
+    const Report mine{lim.acoustic, lim.viscous, lim.force,
+                      speed,        busy,        failure != nullptr ? 1 : 0};
+    const double t0 = tasks::clock_seconds();
+    const auto all = comm_.all_gather(
+        std::span<const std::byte>(reinterpret_cast<const std::byte*>(&mine), sizeof(mine)));
+    between_.push_back({"reduce", -1, true, sizeof(mine), t0, tasks::clock_seconds()});
+    TimeStepLimits global;
+    Real global_speed = 0;
+    int failed_rank = -1;
+    last_busy_.assign(all.size(), 0.0);
+    for (std::size_t r = 0; r < all.size(); ++r) {
+        Report rep{};
+        std::memcpy(&rep, all[r].data(), sizeof(rep));
+        global = min(global, TimeStepLimits{rep.acoustic, rep.viscous, rep.force});
+        global_speed = std::max(global_speed, rep.speed);
+        last_busy_[r] = rep.busy;
+        if (rep.failed != 0 && failed_rank < 0)
+            failed_rank = static_cast<int>(r);
+    }
+    if (failed_rank >= 0) {
+        const std::string msg =
+            comm_.broadcast(failure != nullptr ? *failure : std::string(), failed_rank);
+        throw RunError(fmt::format("{} (on rank {})", msg, failed_rank));
+    }
+    limits_ = global;
+    u_max_ = global_speed;
+}
+
+template <int D>
+Particles<D> Simulation<D>::gather_particles() const {
+    if (!comm_.parallel()) {
+        Particles<D> copy = P_;
+        copy.resize(owned_);
+        return copy;
+    }
+    tasks::Bytes mine;
+    mine.reserve(owned_ * messages::output_bytes<D>);
+    for (std::size_t i = 0; i < owned_; ++i)
+        messages::pack_output(P_, i, mine);
+    Particles<D> out;
+    // Ranks own consecutive runs of the curve, so rank order is (cell key, id) order.
+    for (const auto& b : comm_.gather(mine, 0))
+        messages::unpack_output<D>(b, out);
+    return out;
+}
+
+template <int D>
+void Simulation<D>::write_trace(const std::string& path) const {
+    if (opts_.trace && trace_)
+        trace_->write(comm_, path);
 }
 
 template <int D>

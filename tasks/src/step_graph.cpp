@@ -1,62 +1,275 @@
 #include "sluice/tasks/step_graph.hpp"
 
+#include <mpi.h>
+#include <tbb/concurrent_queue.h>
 #include <tbb/flow_graph.h>
+
+#include <thread>
 
 namespace sluice::tasks {
 
 using tbb::flow::continue_msg;
 using Node = tbb::flow::continue_node<continue_msg>;
 
-struct StepGraph::Impl {
-    tbb::flow::graph graph;
-    tbb::flow::broadcast_node<continue_msg> start{graph};
-    std::vector<std::unique_ptr<Node>> nodes; // index stage * groups + group
-};
+namespace {
+std::chrono::steady_clock::time_point& clock_origin() {
+    static std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+    return t0;
+}
+constexpr int kTagBase = 1000; // tags kTagBase + exchange index
+} // namespace
 
-StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vector<int>>& neighbours,
-                     Body body)
-    : impl_(std::make_unique<Impl>()), stages_(std::move(stages)), neighbours_(neighbours),
-      groups_(static_cast<int>(neighbours.size())), body_(std::move(body)) {
-    const std::size_t n = stages_.size() * static_cast<std::size_t>(groups_);
-    last_seconds_.assign(n, 0.0);
-    impl_->nodes.reserve(n);
-    for (int s = 0; s < stage_count(); ++s)
-        for (int g = 0; g < groups_; ++g) {
-            const std::size_t slot = static_cast<std::size_t>(s * groups_ + g);
-            impl_->nodes.push_back(std::make_unique<Node>(impl_->graph, [this, s, g, slot](
-                                                                            const continue_msg&) {
-                const auto t0 = std::chrono::steady_clock::now();
-                body_(s, g);
-                last_seconds_[slot] =
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            }));
-        }
-    auto node = [&](int s, int g) -> Node& {
-        return *impl_->nodes[static_cast<std::size_t>(s * groups_ + g)];
-    };
-    for (int g = 0; g < groups_; ++g) {
-        tbb::flow::make_edge(impl_->start, node(0, g));
-    }
-    for (int s = 1; s < stage_count(); ++s)
-        for (int g = 0; g < groups_; ++g) {
-            tbb::flow::make_edge(node(s - 1, g), node(s, g));
-            if (stages_[static_cast<std::size_t>(s)].reach == Reach::neighbourhood)
-                for (int nb : neighbours_[static_cast<std::size_t>(g)]) {
-                    tbb::flow::make_edge(node(s - 1, nb), node(s, g));
-                }
-        }
+double clock_seconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_origin()).count();
+}
+void reset_clock_origin() {
+    clock_origin() = std::chrono::steady_clock::now();
 }
 
-StepGraph::~StepGraph() = default;
+struct StepGraph::Impl {
+    tbb::task_arena* arena = nullptr;
+    std::unique_ptr<tbb::flow::graph> graph;
+    std::unique_ptr<tbb::flow::broadcast_node<continue_msg>> start;
+    std::vector<std::unique_ptr<Node>> nodes; // stage * groups + group
+    std::vector<std::unique_ptr<Node>> sends; // exchange * peers + peer
+    std::vector<std::unique_ptr<Node>> recvs; // exchange * peers + peer
+    tbb::concurrent_queue<int> ready;         // packed sends, by (exchange * peers + peer)
+};
+
+void StepGraph::guard(const std::function<void()>& f) {
+    // A failing body must not cancel the graph: its sends would never leave and the peers
+    // would wait forever. The error is kept and rethrown once the step's messages are done.
+    try {
+        f();
+    } catch (...) {
+        std::lock_guard lock(error_mutex_);
+        if (!error_)
+            error_ = std::current_exception();
+    }
+}
+
+void StepGraph::record(std::size_t slot, int stage, int group, int exchange, double t0) {
+    TaskRecord& r = records_[slot];
+    r.stage = stage;
+    r.group = group;
+    r.exchange = exchange;
+    r.thread = tbb::this_task_arena::current_thread_index();
+    r.start = t0;
+    r.end = clock_seconds();
+}
+
+StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vector<int>>& neighbours,
+                     Body body, HaloWiring halo, tbb::task_arena* arena)
+    : impl_(std::make_unique<Impl>()), stages_(std::move(stages)), neighbours_(neighbours),
+      groups_(static_cast<int>(neighbours.size())), body_(std::move(body)), halo_(std::move(halo)) {
+    impl_->arena = arena;
+    const int P = static_cast<int>(halo_.peers.size());
+    const int E = halo_.active() ? static_cast<int>(halo_.exchanges.size()) : 0;
+    const std::size_t n = stages_.size() * static_cast<std::size_t>(groups_);
+    const std::size_t m = static_cast<std::size_t>(E * P);
+    records_.assign(n + 2 * m, {});
+    send_buf_.assign(m, {});
+    recv_buf_.assign(m, {});
+
+    auto build = [&] {
+        auto& g = impl_->graph;
+        g = std::make_unique<tbb::flow::graph>();
+        impl_->start = std::make_unique<tbb::flow::broadcast_node<continue_msg>>(*g);
+        impl_->nodes.reserve(n);
+        for (int s = 0; s < stage_count(); ++s)
+            for (int grp = 0; grp < groups_; ++grp) {
+                const std::size_t slot = static_cast<std::size_t>(s * groups_ + grp);
+                impl_->nodes.push_back(
+                    std::make_unique<Node>(*g, [this, s, grp, slot](const continue_msg&) {
+                        const double t0 = clock_seconds();
+                        guard([&] { body_(s, grp); });
+                        record(slot, s, grp, -1, t0);
+                    }));
+            }
+        auto node = [&](int s, int grp) -> Node& {
+            return *impl_->nodes[static_cast<std::size_t>(s * groups_ + grp)];
+        };
+        for (int grp = 0; grp < groups_; ++grp)
+            tbb::flow::make_edge(*impl_->start, node(0, grp));
+        for (int s = 1; s < stage_count(); ++s)
+            for (int grp = 0; grp < groups_; ++grp) {
+                tbb::flow::make_edge(node(s - 1, grp), node(s, grp));
+                if (stages_[static_cast<std::size_t>(s)].reach == Reach::neighbourhood)
+                    for (int nb : neighbours_[static_cast<std::size_t>(grp)])
+                        tbb::flow::make_edge(node(s - 1, nb), node(s, grp));
+            }
+        for (int e = 0; e < E; ++e)
+            for (int p = 0; p < P; ++p) {
+                const auto k = static_cast<std::size_t>(e * P + p);
+                const int after = halo_.exchanges[static_cast<std::size_t>(e)].after_stage;
+                const auto& facing = halo_.boundary[static_cast<std::size_t>(p)];
+                impl_->sends.push_back(
+                    std::make_unique<Node>(*g, [this, e, p, k, n](const continue_msg&) {
+                        const double t0 = clock_seconds();
+                        guard([&] {
+                            send_buf_[k].clear();
+                            halo_.data->pack(e, p, send_buf_[k]);
+                        });
+                        record(n + k, -1, p, e, t0);
+                        impl_->ready.push(static_cast<int>(k));
+                    }));
+                // One predecessor more than the edges: the main thread's "message arrived".
+                impl_->recvs.push_back(
+                    std::make_unique<Node>(*g, 1, [this, e, p, k, n, m](const continue_msg&) {
+                        const double t0 = clock_seconds();
+                        guard([&] { halo_.data->unpack(e, p, recv_buf_[k]); });
+                        record(n + m + k, -2, p, e, t0);
+                    }));
+                Node& send = *impl_->sends.back();
+                Node& recv = *impl_->recvs.back();
+                if (after < 0 || facing.empty()) {
+                    tbb::flow::make_edge(*impl_->start, send);
+                } else {
+                    for (int grp : facing)
+                        tbb::flow::make_edge(node(after, grp), send);
+                }
+                if (after >= 0)
+                    for (int grp : facing)
+                        tbb::flow::make_edge(node(after, grp), recv);
+                if (after + 1 < stage_count())
+                    for (int grp : facing)
+                        tbb::flow::make_edge(recv, node(after + 1, grp));
+            }
+    };
+    if (arena != nullptr)
+        arena->execute(build);
+    else
+        build();
+}
+
+StepGraph::~StepGraph() {
+    if (impl_->arena != nullptr) {
+        // Nodes and graph are destroyed inside their arena.
+        impl_->arena->execute([&] {
+            impl_->recvs.clear();
+            impl_->sends.clear();
+            impl_->nodes.clear();
+            impl_->start.reset();
+            impl_->graph.reset();
+        });
+    }
+}
 
 void StepGraph::run() {
-    impl_->start.try_put(continue_msg());
-    try {
-        impl_->graph.wait_for_all();
-    } catch (...) {
-        impl_->graph.reset();
-        throw;
+    run_begin_ = clock_seconds();
+    messages_.clear();
+    if (halo_.active())
+        run_with_messages();
+    else
+        run_local();
+    run_end_ = clock_seconds();
+    if (error_) {
+        std::exception_ptr e;
+        std::swap(e, error_);
+        std::rethrow_exception(e);
     }
+}
+
+void StepGraph::run_local() {
+    auto go = [&] {
+        impl_->start->try_put(continue_msg());
+        impl_->graph->wait_for_all();
+    };
+    if (impl_->arena != nullptr)
+        impl_->arena->execute(go);
+    else
+        go();
+}
+
+void StepGraph::run_with_messages() {
+    const int P = static_cast<int>(halo_.peers.size());
+    const int E = static_cast<int>(halo_.exchanges.size());
+    const std::size_t m = static_cast<std::size_t>(E * P);
+    std::vector<MPI_Request> rreq(m, MPI_REQUEST_NULL), sreq(m, MPI_REQUEST_NULL);
+    std::vector<std::size_t> rmsg(m), smsg(m);
+    // Receives first, before any task can produce data.
+    for (int e = 0; e < E; ++e)
+        for (int p = 0; p < P; ++p) {
+            const auto k = static_cast<std::size_t>(e * P + p);
+            recv_buf_[k].resize(halo_.data->recv_bytes(e, p));
+            MPI_Irecv(recv_buf_[k].data(), static_cast<int>(recv_buf_[k].size()), MPI_BYTE,
+                      halo_.peers[static_cast<std::size_t>(p)], kTagBase + e, MPI_COMM_WORLD,
+                      &rreq[k]);
+            rmsg[k] = messages_.size();
+            messages_.push_back({halo_.exchanges[static_cast<std::size_t>(e)].name,
+                                 halo_.peers[static_cast<std::size_t>(p)], false,
+                                 recv_buf_[k].size(), clock_seconds(), 0});
+        }
+    impl_->start->try_put(continue_msg()); // from outside the arena: the workers take it
+
+    std::size_t received = 0, sent = 0;
+    std::vector<int> idx(m);
+    std::vector<double> arrived(m, -1);
+    std::size_t delayed = 0; // arrived but not yet reported (injected delay)
+    int idle_rounds = 0;
+    while (received < m || sent < m || delayed > 0) {
+        bool progress = false;
+        int k = 0;
+        while (impl_->ready.try_pop(k)) {
+            const auto ku = static_cast<std::size_t>(k);
+            const int e = k / P, p = k % P;
+            MPI_Isend(send_buf_[ku].data(), static_cast<int>(send_buf_[ku].size()), MPI_BYTE,
+                      halo_.peers[static_cast<std::size_t>(p)], kTagBase + e, MPI_COMM_WORLD,
+                      &sreq[ku]);
+            Comm::count_sent(send_buf_[ku].size());
+            smsg[ku] = messages_.size();
+            messages_.push_back({halo_.exchanges[static_cast<std::size_t>(e)].name,
+                                 halo_.peers[static_cast<std::size_t>(p)], true,
+                                 send_buf_[ku].size(), clock_seconds(), 0});
+            ++sent;
+            progress = true;
+        }
+        if (received < m) {
+            int count = 0;
+            MPI_Testsome(static_cast<int>(m), rreq.data(), &count, idx.data(), MPI_STATUSES_IGNORE);
+            for (int c = 0; c < count && count != MPI_UNDEFINED; ++c) {
+                arrived[static_cast<std::size_t>(idx[static_cast<std::size_t>(c)])] =
+                    clock_seconds();
+                ++received;
+                ++delayed;
+                progress = true;
+            }
+        }
+        if (delayed > 0) {
+            const double now = clock_seconds();
+            for (std::size_t q = 0; q < m; ++q)
+                if (arrived[q] >= 0 && now - arrived[q] >= receive_delay_) {
+                    messages_[rmsg[q]].done = now;
+                    arrived[q] = -1;
+                    --delayed;
+                    impl_->recvs[q]->try_put(continue_msg());
+                }
+        }
+        if (sent > 0) {
+            int count = 0;
+            MPI_Testsome(static_cast<int>(m), sreq.data(), &count, idx.data(), MPI_STATUSES_IGNORE);
+            for (int c = 0; c < count && count != MPI_UNDEFINED; ++c)
+                messages_[smsg[static_cast<std::size_t>(idx[static_cast<std::size_t>(c)])]].done =
+                    clock_seconds();
+        }
+        if (progress) {
+            idle_rounds = 0;
+        } else if (++idle_rounds > 64) {
+            // Nothing to do: give the core to the workers (a rank may share it with them).
+            std::this_thread::sleep_for(std::chrono::microseconds(20));
+        } else {
+            std::this_thread::yield();
+        }
+    }
+    if (impl_->arena != nullptr)
+        impl_->arena->execute([&] { impl_->graph->wait_for_all(); });
+    else
+        impl_->graph->wait_for_all();
+    for (std::size_t q = 0; q < m; ++q)
+        if (sreq[q] != MPI_REQUEST_NULL) {
+            MPI_Wait(&sreq[q], MPI_STATUS_IGNORE);
+            messages_[smsg[q]].done = clock_seconds();
+        }
 }
 
 } // namespace sluice::tasks

@@ -9,6 +9,12 @@
 
 namespace sluice {
 
+// What the balancer equalises between ranks: measured task time, or particle counts.
+enum class BalanceCost { time, particles };
+// How ranks split the curve at the start: equal particle counts, or equal key ranges
+// (naive; with most of the domain empty it is badly unbalanced, to exercise the balancer).
+enum class InitialDecomposition { balanced, key_range };
+
 using Triple = std::array<double, 3>;
 
 enum class KernelType { quintic, wendland_c2, cubic_spline };
@@ -96,6 +102,13 @@ struct CaseConfig {
 
     // [runtime]
     int particles_per_group = 2000; // target cost of one cell group, in particles
+    // Rank balancing (issue 3): rebalance when the slowest rank's busy time exceeds the mean
+    // by this fraction over a window of steps, and/or every N steps (0 = only on imbalance).
+    double rebalance_threshold = 0.10;
+    int rebalance_window = 10;
+    int rebalance_every = 0;
+    BalanceCost balance_cost = BalanceCost::time;
+    InitialDecomposition initial_decomposition = InitialDecomposition::balanced;
 };
 
 } // namespace sluice

@@ -13,6 +13,7 @@ struct RunOptions {
     int threads = 0;     // 0 = all hardware threads
     bool quiet = false;  // no progress output
     bool verbose = false;
+    std::string trace_path; // --trace: Chrome/Perfetto trace of every task and message
 };
 
 struct RunResult {
@@ -40,7 +41,8 @@ struct CaseInfo {
 
 CaseInfo describe_case(const CaseConfig& cfg);
 
-// Runs the case to its end time. Throws sluice::RunError on a physical failure (NaN,
+// Runs the case to its end time; on several MPI ranks every rank calls it (collective) and
+// rank 0 writes all output. Throws sluice::RunError on a physical failure (NaN,
 // blow-up) after writing a last snapshot; throws sluice::CaseError for a case the solver
 // refuses (e.g. a fixed dt above the stability limit).
 RunResult run_case(const CaseConfig& cfg, const RunOptions& opts);

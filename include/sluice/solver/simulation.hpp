@@ -11,8 +11,14 @@
 #include "sluice/physics/momentum.hpp"
 #include "sluice/physics/timestep.hpp"
 #include "sluice/physics/walls.hpp"
+#include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
+#include "sluice/tasks/profile.hpp"
+#include "sluice/tasks/rank_layout.hpp"
 #include "sluice/tasks/step_graph.hpp"
+#include "sluice/tasks/trace.hpp"
+
+#include <tbb/task_arena.h>
 
 #include <memory>
 #include <string>
@@ -20,19 +26,63 @@
 
 namespace sluice {
 
+struct SimulationOptions {
+    int threads = 0;    // worker threads of this rank (0 = all allowed)
+    bool trace = false; // record every task and message for --trace
+    std::size_t trace_max_events = 4000000;
+    bool log_rebalances = false; // print each rebalance on rank 0
+};
+
+// One rebalance of the cut points between ranks (logged and written into summary.json).
+struct RebalanceRecord {
+    long step = 0;
+    double imbalance_before = 0; // measured max/mean busy time over the window
+    double predicted_after = 0;  // from the measured group costs and the new cuts
+    std::uint64_t particles_moved = 0;
+    double seconds = 0;
+};
+
+// Balance measured over one window of steps (the "imbalance curve").
+struct BalanceSample {
+    long step = 0;
+    double imbalance = 0;
+};
+
+// A WCSPH simulation on this rank: its particles (plus halo copies of its neighbours'), the
+// grid, and the step graph that advances them. On several MPI ranks every rank holds one of
+// these; collective member functions are marked.
 template <int D>
 class Simulation {
 public:
-    explicit Simulation(const CaseConfig& cfg);
+    // Collective.
+    explicit Simulation(const CaseConfig& cfg, SimulationOptions opts = {});
+    ~Simulation();
 
-    // Advances one time step.
+    // Advances one time step. Collective.
     void step();
 
     [[nodiscard]] double time() const { return time_; }
     [[nodiscard]] long steps() const { return steps_; }
     [[nodiscard]] double dt() const { return dt_; }
+    // This rank's particles [0, owned()) followed by halo copies. On one rank: all of them.
     [[nodiscard]] const Particles<D>& particles() const { return P_; }
     [[nodiscard]] Particles<D>& particles() { return P_; }
+    [[nodiscard]] std::size_t owned() const { return owned_; }
+    // Every rank's particles, in (cell key, id) order, on rank 0 (empty elsewhere; on one rank
+    // a copy of particles()). Collective.
+    [[nodiscard]] Particles<D> gather_particles() const;
+    [[nodiscard]] const tasks::Comm& comm() const { return comm_; }
+    [[nodiscard]] const tasks::RankLayout& rank_layout() const { return layout_; }
+    [[nodiscard]] int threads() const { return threads_; }
+    [[nodiscard]] const tasks::RankProfile& profile() const { return profile_; }
+    [[nodiscard]] const std::vector<RebalanceRecord>& rebalances() const { return rebalances_; }
+    [[nodiscard]] const std::vector<BalanceSample>& balance_history() const {
+        return balance_history_;
+    }
+    // Writes the --trace file (collective); no-op unless opts.trace.
+    void write_trace(const std::string& path) const;
+    // Test hook: delay the reported arrival of every halo message by `seconds`.
+    void inject_receive_delay(double seconds) { receive_delay_ = seconds; }
     [[nodiscard]] const CellGrid<D>& grid() const { return grid_; }
     [[nodiscard]] const AnyKernel<D>& kernel() const { return kernel_; }
     [[nodiscard]] const Eos& eos() const { return eos_; }
@@ -55,7 +105,14 @@ public:
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
 
 private:
+    class Halo;
+    void distribute_initial_particles();
     void rebin_and_decompose();
+    void migrate_to_neighbours();
+    bool maybe_rebalance(const std::vector<double>& busy_per_rank);
+    void plan_halo();
+    [[nodiscard]] std::vector<std::vector<int>> boundary_groups() const;
+    void reduce_step_results();
     void build_graph();
     void run_stage(int stage, int group);
     template <class K>
@@ -97,6 +154,33 @@ private:
     TimeStepLimits limits_;
     double rebin_seconds_ = 0;
     std::vector<double> stage_busy_;
+
+    // Distribution over ranks.
+    SimulationOptions opts_;
+    int threads_ = 1;
+    std::unique_ptr<tbb::task_arena> arena_;
+    tasks::Comm comm_;
+    tasks::RankLayout layout_;
+    std::vector<int> peers_;
+    std::size_t owned_ = 0;
+    std::vector<std::vector<CellIndex>> send_cells_; // per peer, in key order
+    std::vector<std::size_t> send_count_, send_walls_, recv_count_, recv_walls_, recv_offset_;
+    std::vector<std::vector<int>> occupied_targets_; // per occupied cell: peers it is halo of
+    std::unique_ptr<Halo> halo_;
+    std::vector<tasks::MessageRecord> between_; // communication outside the last graph
+    tasks::RankProfile profile_;
+    std::unique_ptr<tasks::TraceRecorder> trace_;
+    double receive_delay_ = 0;
+
+    // Balancer.
+    std::vector<double> group_busy_; // per group, summed since the graph was built
+    long graph_steps_ = 0;
+    std::vector<double> last_busy_;   // per rank, busy seconds of the last step
+    std::vector<double> window_busy_; // per rank, since the last rebalance or check
+    long window_steps_ = 0, steps_since_rebalance_ = 0;
+    std::vector<RebalanceRecord> rebalances_;
+    std::vector<BalanceSample> balance_history_;
+    bool force_regroup_ = false;
 };
 
 extern template class Simulation<2>;

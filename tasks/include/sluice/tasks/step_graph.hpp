@@ -4,11 +4,27 @@
 // stage of the group and of every adjacent group; a "self" stage waits for its own group only.
 // There is no barrier between stages beyond these edges. The graph is built once per
 // decomposition and replayed every step (tbb::flow continue_nodes re-arm after each run).
+//
+// On more than one rank, halo exchanges are nodes of the same graph. For exchange e (the
+// results of stage s_e, or the state at the start of the step when s_e = -1) and peer rank p:
+//   send(e,p)   waits for (s_e, g) of every boundary group g facing p, packs, and hands the
+//               buffer to the main thread, which posts MPI_Isend at once;
+//   recv(e,p)   is released by the main thread when MPI_Testsome reports the message (the
+//               MPI_Irecv was posted before any task of the step ran) and, so that it never
+//               overwrites halo data a local task still reads, by (s_e, g) of those groups;
+//               it unpacks, and (s_e + 1, g) waits for it.
+// Interior groups depend on no message and run while messages are in flight. Only the main
+// thread calls MPI (MPI_THREAD_FUNNELED); no TBB worker ever waits inside MPI.
+#include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
 
+#include <tbb/task_arena.h>
+
 #include <chrono>
+#include <exception>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -21,40 +37,109 @@ struct StageSpec {
     Reach reach = Reach::neighbourhood; // what the stage needs of the previous stage
 };
 
+struct ExchangeSpec {
+    std::string name;
+    int after_stage = -1; // whose results it carries; -1: the state at the start of the step
+};
+
+// What the solver supplies for halo exchanges: message sizes, packing and unpacking. pack and
+// unpack run as tasks of the graph; recv_bytes is called by the main thread before the step.
+class HaloData {
+public:
+    virtual ~HaloData() = default;
+    [[nodiscard]] virtual std::size_t recv_bytes(int exchange, int peer) const = 0;
+    virtual void pack(int exchange, int peer, Bytes& out) = 0;
+    virtual void unpack(int exchange, int peer, std::span<const std::byte> in) = 0;
+};
+
+struct HaloWiring {
+    std::vector<int> peers;                 // peer ranks, sorted
+    std::vector<std::vector<int>> boundary; // per peer: local groups that face it
+    std::vector<ExchangeSpec> exchanges;
+    HaloData* data = nullptr;
+    [[nodiscard]] bool active() const { return !peers.empty() && !exchanges.empty(); }
+};
+
+// Seconds on a clock shared by every rank of a node (steady clock, origin set once).
+double clock_seconds();
+void reset_clock_origin();
+
+// One task of the last run. stage >= 0: compute node of (stage, group); stage = -1: pack of
+// exchange `exchange` for peer `group`; stage = -2: unpack of it.
+struct TaskRecord {
+    int stage = 0, group = 0, exchange = -1, thread = 0;
+    double start = 0, end = 0;
+};
+
+// One message of the last run (post to detected completion).
+struct MessageRecord {
+    std::string name;
+    int peer = 0;
+    bool send = false;
+    std::size_t bytes = 0;
+    double post = 0, done = 0;
+};
+
 class StepGraph {
 public:
     // body(stage, group) does the work of one node. It must touch only the group's own
     // particles for writing.
     using Body = std::function<void(int stage, int group)>;
 
+    // `arena` (optional) is where the tasks run; with halo exchanges it must leave the main
+    // thread free to drive MPI.
     StepGraph(std::vector<StageSpec> stages, const std::vector<std::vector<int>>& neighbours,
-              Body body);
+              Body body, HaloWiring halo = {}, tbb::task_arena* arena = nullptr);
     ~StepGraph();
     StepGraph(const StepGraph&) = delete;
     StepGraph& operator=(const StepGraph&) = delete;
 
-    // Runs every node once, in dependency order, and returns when all have finished.
-    // An exception thrown by a node body is rethrown here (after the graph is reset).
+    // Runs every node once, in dependency order, and returns when all have finished and every
+    // message of the step is complete. An exception thrown by a node body is rethrown here,
+    // after the step's messages have all completed (so no peer is left waiting).
     void run();
 
     [[nodiscard]] int stage_count() const { return static_cast<int>(stages_.size()); }
     [[nodiscard]] int group_count() const { return groups_; }
     [[nodiscard]] const std::vector<StageSpec>& stages() const { return stages_; }
     [[nodiscard]] const std::vector<std::vector<int>>& neighbours() const { return neighbours_; }
+    [[nodiscard]] const HaloWiring& halo() const { return halo_; }
 
     // Busy seconds of each (stage, group) node in the last run.
     [[nodiscard]] double node_seconds(int stage, int group) const {
-        return last_seconds_[static_cast<std::size_t>(stage * groups_ + group)];
+        const auto& r = records_[static_cast<std::size_t>(stage * groups_ + group)];
+        return r.end - r.start;
     }
+    // Every task (compute, pack, unpack) and message of the last run, and its time span.
+    [[nodiscard]] const std::vector<TaskRecord>& task_records() const { return records_; }
+    [[nodiscard]] const std::vector<MessageRecord>& message_records() const { return messages_; }
+    [[nodiscard]] double run_begin() const { return run_begin_; }
+    [[nodiscard]] double run_end() const { return run_end_; }
+
+    // Test hook: the main thread reports a completed receive only `seconds` after MPI does,
+    // as if the network were that slow.
+    void inject_receive_delay(double seconds) { receive_delay_ = seconds; }
 
 private:
+    void run_local();
+    void run_with_messages();
+    void record(std::size_t slot, int stage, int group, int exchange, double t0);
+    void guard(const std::function<void()>& f);
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
     std::vector<StageSpec> stages_;
     std::vector<std::vector<int>> neighbours_;
     int groups_ = 0;
     Body body_;
-    std::vector<double> last_seconds_;
+    HaloWiring halo_;
+    std::vector<TaskRecord> records_; // compute nodes, then per (exchange, peer) pack, unpack
+    std::vector<MessageRecord> messages_;
+    std::vector<Bytes> send_buf_, recv_buf_; // per (exchange, peer)
+    double run_begin_ = 0, run_end_ = 0;
+    double receive_delay_ = 0;
+    std::mutex error_mutex_;
+    std::exception_ptr error_;
 };
 
 } // namespace sluice::tasks

@@ -1,0 +1,83 @@
+#pragma once
+// The only door to MPI. Everything here is called from the main thread (MPI_THREAD_FUNNELED):
+// TBB workers never touch MPI. When MPI was not initialised (unit tests, tools) the world is
+// one rank and every exchange is a no-op, so the solver has a single code path.
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace sluice::tasks {
+
+using Bytes = std::vector<std::byte>;
+
+// Initialises MPI for the lifetime of the object with the thread level sluice needs
+// (FUNNELED: only the main thread calls MPI) and checks that the library provides it.
+class MpiSession {
+public:
+    MpiSession(int* argc, char*** argv);
+    ~MpiSession();
+    MpiSession(const MpiSession&) = delete;
+    MpiSession& operator=(const MpiSession&) = delete;
+    [[nodiscard]] int provided_level() const { return provided_; }
+
+private:
+    int provided_ = 0;
+    bool owns_ = false;
+};
+
+class Comm {
+public:
+    // MPI_COMM_WORLD, or a one-rank world when MPI is not initialised.
+    static Comm world();
+
+    [[nodiscard]] int rank() const { return rank_; }
+    [[nodiscard]] int size() const { return size_; }
+    [[nodiscard]] bool parallel() const { return size_ > 1; }
+
+    // Point-to-point exchange with a symmetric set of peers: send[k] goes to peers[k] and
+    // recv[k] is what peers[k] sent. Non-blocking sends, receives matched by probe; returns
+    // once every message of this exchange is complete.
+    void exchange(const std::vector<int>& peers, const std::vector<Bytes>& send,
+                  std::vector<Bytes>& recv, int tag) const;
+
+    // Every rank sends send[r] to rank r (used when the balancer moves cut points).
+    void all_to_all(const std::vector<Bytes>& send, std::vector<Bytes>& recv) const;
+
+    // Each rank contributes `mine`; every rank gets all contributions in rank order.
+    [[nodiscard]] std::vector<Bytes> all_gather(std::span<const std::byte> mine) const;
+
+    // Rank `root` gets every rank's contribution in rank order (others get an empty vector).
+    [[nodiscard]] std::vector<Bytes> gather(std::span<const std::byte> mine, int root = 0) const;
+
+    // Broadcast of a string from `root`.
+    [[nodiscard]] std::string broadcast(const std::string& s, int root) const;
+
+    void barrier() const;
+    [[noreturn]] void abort(int code) const;
+
+    // Bytes this rank has sent through this object's functions and the step graphs.
+    [[nodiscard]] static std::uint64_t bytes_sent();
+    static void count_sent(std::uint64_t bytes);
+
+private:
+    int rank_ = 0, size_ = 1;
+};
+
+// Packs/unpacks trivially copyable values into byte buffers.
+template <class T>
+void put(Bytes& b, const T& v) {
+    const auto* p = reinterpret_cast<const std::byte*>(&v);
+    b.insert(b.end(), p, p + sizeof(T));
+}
+template <class T>
+T take(std::span<const std::byte> b, std::size_t& pos) {
+    T v;
+    std::memcpy(&v, b.data() + pos, sizeof(T));
+    pos += sizeof(T);
+    return v;
+}
+
+} // namespace sluice::tasks

@@ -1,0 +1,38 @@
+#pragma once
+// Chrome/Perfetto trace of a run (chrome://tracing, ui.perfetto.dev): every task as a slice on
+// its rank's worker-thread track, every message as a slice on the rank's "MPI" track (the
+// main thread, which drives all communication). Each rank records its own events; the root
+// gathers them into one file.
+#include "sluice/tasks/comm.hpp"
+#include "sluice/tasks/step_graph.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace sluice::tasks {
+
+class TraceRecorder {
+public:
+    // At most `max_events` events are kept (a warning is added past that).
+    TraceRecorder(int rank, std::vector<std::string> stage_names, std::size_t max_events);
+
+    void add_step(long step, const StepGraph& g, const std::vector<MessageRecord>& between);
+    void add_event(const std::string& name, double begin, double end); // e.g. a rebalance
+
+    // Gathers every rank's events to rank 0, which writes `path`. Collective.
+    void write(const Comm& comm, const std::string& path) const;
+
+    [[nodiscard]] std::size_t events() const { return events_; }
+    [[nodiscard]] bool truncated() const { return truncated_; }
+
+private:
+    void slice(const std::string& name, int tid, double begin, double end, const std::string& args);
+    int rank_;
+    std::vector<std::string> stages_;
+    std::size_t max_events_, events_ = 0;
+    bool truncated_ = false;
+    std::string json_; // comma-separated events
+};
+
+} // namespace sluice::tasks

@@ -1,0 +1,132 @@
+#include "sluice/tasks/rank_layout.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace sluice::tasks {
+
+int RankLayout::rank_of(MortonKey k) const {
+    const auto it = std::upper_bound(key_begin.begin(), key_begin.end(), k);
+    return it == key_begin.begin() ? 0 : static_cast<int>(it - key_begin.begin()) - 1;
+}
+
+RankLayout cut_ranks(const std::vector<CurveUnit>& units, int ranks) {
+    RankLayout layout;
+    layout.key_begin.assign(1, 0);
+    double total = 0;
+    for (const auto& u : units)
+        total += u.cost;
+    // Rank r starts at the first unit whose cost prefix reaches r/R of the total; the cut is
+    // moved back one unit when that lands closer to the ideal point.
+    std::vector<double> prefix(units.size() + 1, 0.0);
+    for (std::size_t i = 0; i < units.size(); ++i)
+        prefix[i + 1] = prefix[i] + units[i].cost;
+    std::size_t next = 1; // first unit index a new cut may use
+    for (int r = 1; r < ranks; ++r) {
+        const double ideal = total * r / ranks;
+        std::size_t i = next;
+        while (i < units.size() && prefix[i] < ideal)
+            ++i;
+        // prefix[i] is the cost before unit i: cutting at i-1 instead is better when it lands
+        // closer to the ideal point (and past the previous cut).
+        if (i > next && (i == units.size() || ideal - prefix[i - 1] < prefix[i] - ideal))
+            --i;
+        if (i >= units.size()) {
+            // No unit left: this and later ranks own empty ranges past the last key.
+            const MortonKey past = units.empty() ? 1 : units.back().key + 1;
+            layout.key_begin.push_back(std::max(past, layout.key_begin.back() + 1));
+            continue;
+        }
+        layout.key_begin.push_back(std::max(units[i].key, layout.key_begin.back() + 1));
+        next = i + 1;
+    }
+    return layout;
+}
+
+template <int D>
+RankLayout cut_ranks_by_key(const CellGrid<D>& grid, int ranks) {
+    std::array<int, D> top{};
+    for (int d = 0; d < D; ++d)
+        top[d] = grid.dims[d] - 1;
+    const MortonKey end = grid.morton(top) + 1;
+    RankLayout layout;
+    for (int r = 1; r < ranks; ++r)
+        layout.key_begin.push_back(
+            std::max<MortonKey>(end / static_cast<MortonKey>(ranks) * static_cast<MortonKey>(r),
+                                layout.key_begin.back() + 1));
+    return layout;
+}
+
+double imbalance(const std::vector<double>& cost_per_rank) {
+    if (cost_per_rank.empty())
+        return 1.0;
+    const double total = std::accumulate(cost_per_rank.begin(), cost_per_rank.end(), 0.0);
+    if (total <= 0)
+        return 1.0;
+    return *std::max_element(cost_per_rank.begin(), cost_per_rank.end()) /
+           (total / static_cast<double>(cost_per_rank.size()));
+}
+
+template <int D>
+std::vector<std::vector<int>> peer_ranks(const CellGrid<D>& grid, const RankLayout& layout) {
+    const int R = layout.ranks();
+    std::vector<std::vector<char>> touch(static_cast<std::size_t>(R),
+                                         std::vector<char>(static_cast<std::size_t>(R), 0));
+    if (R > 1) {
+        const auto n = static_cast<CellIndex>(grid.cell_count());
+        std::vector<int> owner(n);
+        for (CellIndex c = 0; c < n; ++c)
+            owner[c] = layout.rank_of(grid.morton(grid.unlinear(c)));
+        NeighbourCell<D> nbr[D == 2 ? 9 : 27];
+        for (CellIndex c = 0; c < n; ++c) {
+            const int k = adjacent_cells(grid, c, nbr);
+            for (int m = 0; m < k; ++m) {
+                const int o = owner[nbr[m].cell];
+                if (o != owner[c]) {
+                    touch[static_cast<std::size_t>(owner[c])][static_cast<std::size_t>(o)] = 1;
+                    touch[static_cast<std::size_t>(o)][static_cast<std::size_t>(owner[c])] = 1;
+                }
+            }
+        }
+    }
+    std::vector<std::vector<int>> peers(static_cast<std::size_t>(R));
+    for (int r = 0; r < R; ++r)
+        for (int s = 0; s < R; ++s)
+            if (touch[static_cast<std::size_t>(r)][static_cast<std::size_t>(s)])
+                peers[static_cast<std::size_t>(r)].push_back(s);
+    return peers;
+}
+
+template <int D>
+std::vector<std::vector<int>> halo_targets(const CellGrid<D>& grid, const RankLayout& layout,
+                                           int rank, const std::vector<int>& peers,
+                                           const std::vector<CellIndex>& occupied_cells) {
+    std::vector<std::vector<int>> out(occupied_cells.size());
+    NeighbourCell<D> nbr[D == 2 ? 9 : 27];
+    for (std::size_t k = 0; k < occupied_cells.size(); ++k) {
+        const int n = adjacent_cells(grid, occupied_cells[k], nbr);
+        for (int m = 0; m < n; ++m) {
+            const int o = layout.rank_of(grid.morton(grid.unlinear(nbr[m].cell)));
+            if (o == rank)
+                continue;
+            const auto it = std::lower_bound(peers.begin(), peers.end(), o);
+            out[k].push_back(static_cast<int>(it - peers.begin()));
+        }
+        std::sort(out[k].begin(), out[k].end());
+        out[k].erase(std::unique(out[k].begin(), out[k].end()), out[k].end());
+    }
+    return out;
+}
+
+template RankLayout cut_ranks_by_key<2>(const CellGrid<2>&, int);
+template RankLayout cut_ranks_by_key<3>(const CellGrid<3>&, int);
+template std::vector<std::vector<int>> peer_ranks<2>(const CellGrid<2>&, const RankLayout&);
+template std::vector<std::vector<int>> peer_ranks<3>(const CellGrid<3>&, const RankLayout&);
+template std::vector<std::vector<int>> halo_targets<2>(const CellGrid<2>&, const RankLayout&, int,
+                                                       const std::vector<int>&,
+                                                       const std::vector<CellIndex>&);
+template std::vector<std::vector<int>> halo_targets<3>(const CellGrid<3>&, const RankLayout&, int,
+                                                       const std::vector<int>&,
+                                                       const std::vector<CellIndex>&);
+
+} // namespace sluice::tasks
