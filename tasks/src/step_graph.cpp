@@ -4,6 +4,8 @@
 #include <tbb/concurrent_queue.h>
 #include <tbb/flow_graph.h>
 
+#include <algorithm>
+#include <atomic>
 #include <thread>
 
 namespace sluice::tasks {
@@ -34,11 +36,13 @@ struct StepGraph::Impl {
     std::vector<std::unique_ptr<Node>> sends; // exchange * peers + peer
     std::vector<std::unique_ptr<Node>> recvs; // exchange * peers + peer
     tbb::concurrent_queue<int> ready;         // packed sends, by (exchange * peers + peer)
+    std::atomic<int> running{0};              // tasks executing right now
 };
 
 void StepGraph::guard(const std::function<void()>& f) {
     // A failing body must not cancel the graph: its sends would never leave and the peers
     // would wait forever. The error is kept and rethrown once the step's messages are done.
+    ++impl_->running;
     try {
         f();
     } catch (...) {
@@ -46,6 +50,7 @@ void StepGraph::guard(const std::function<void()>& f) {
         if (!error_)
             error_ = std::current_exception();
     }
+    --impl_->running;
 }
 
 void StepGraph::record(std::size_t slot, int stage, int group, int exchange, double t0) {
@@ -206,7 +211,7 @@ void StepGraph::run_with_messages() {
     std::vector<int> idx(m);
     std::vector<double> arrived(m, -1);
     std::size_t delayed = 0; // arrived but not yet reported (injected delay)
-    int idle_rounds = 0;
+    auto backoff = std::chrono::microseconds(50);
     while (received < m || sent < m || delayed > 0) {
         bool progress = false;
         int k = 0;
@@ -252,13 +257,15 @@ void StepGraph::run_with_messages() {
                 messages_[smsg[static_cast<std::size_t>(idx[static_cast<std::size_t>(c)])]].done =
                     clock_seconds();
         }
+        // How fast to poll: a message matters at once when no task is running (the rank is
+        // waiting for it); while the workers compute, polling often only steals their core.
         if (progress) {
-            idle_rounds = 0;
-        } else if (++idle_rounds > 64) {
-            // Nothing to do: give the core to the workers (a rank may share it with them).
-            std::this_thread::sleep_for(std::chrono::microseconds(20));
-        } else {
+            backoff = std::chrono::microseconds(50);
+        } else if (impl_->running.load() == 0) {
             std::this_thread::yield();
+        } else {
+            std::this_thread::sleep_for(backoff);
+            backoff = std::min(2 * backoff, std::chrono::microseconds(1000));
         }
     }
     if (impl_->arena != nullptr)

@@ -1,0 +1,125 @@
+// Rank decomposition along the Morton curve: cut points, peers, halo cells (periodic wrap
+// included), imbalance, and the interval arithmetic behind the overlap figures.
+#include "sluice/tasks/profile.hpp"
+#include "sluice/tasks/rank_layout.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <set>
+
+using namespace sluice;
+using namespace sluice::tasks;
+
+namespace {
+
+// Occupied cells: every cell of the grid, in key order.
+template <int D>
+std::vector<CellIndex> all_cells_by_key(const CellGrid<D>& g) {
+    std::vector<CellIndex> c(g.cell_count());
+    for (CellIndex i = 0; i < c.size(); ++i)
+        c[i] = i;
+    std::sort(c.begin(), c.end(), [&](CellIndex a, CellIndex b) {
+        return g.morton(g.unlinear(a)) < g.morton(g.unlinear(b));
+    });
+    return c;
+}
+
+} // namespace
+
+TEST_CASE("cut_ranks gives contiguous runs of nearly equal cost") {
+    std::vector<CurveUnit> units;
+    for (int k = 0; k < 100; ++k)
+        units.push_back({static_cast<MortonKey>(10 * k), 1.0});
+    const RankLayout l = cut_ranks(units, 4);
+    REQUIRE(l.ranks() == 4);
+    CHECK(l.key_begin == std::vector<MortonKey>{0, 250, 500, 750});
+    std::vector<double> cost(4, 0.0);
+    for (const auto& u : units)
+        cost[static_cast<std::size_t>(l.rank_of(u.key))] += u.cost;
+    CHECK(imbalance(cost) == doctest::Approx(1.0));
+
+    // A heavy unit cannot be split: the cut lands on the side closer to the ideal point
+    // (costs 12 | 4 rather than 2 | 14).
+    std::vector<CurveUnit> skew{{0, 1}, {5, 1}, {9, 10}, {12, 1}, {20, 3}};
+    const RankLayout s = cut_ranks(skew, 2);
+    CHECK(s.key_begin == std::vector<MortonKey>{0, 12});
+
+    // More ranks than units: the extra ranks own empty ranges, cut points stay increasing.
+    const RankLayout e = cut_ranks({{3, 1.0}}, 3);
+    REQUIRE(e.ranks() == 3);
+    CHECK(std::is_sorted(e.key_begin.begin(), e.key_begin.end()));
+    CHECK(e.rank_of(3) == 0);
+}
+
+TEST_CASE("imbalance is max over mean") {
+    CHECK(imbalance({1, 1, 1}) == doctest::Approx(1.0));
+    CHECK(imbalance({3, 1}) == doctest::Approx(1.5));
+    CHECK(imbalance({0, 0}) == 1.0);
+}
+
+TEST_CASE("peers and halo cells on an open 2-D grid") {
+    // 8 x 8 cells of edge 1; two ranks split the key space in half: with Morton order the
+    // halves are the lower and upper 8 x 4 blocks (y is the slower axis at the top bit).
+    const auto g = CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(8, 8), 1.0, {false, false});
+    REQUIRE(g.dims[0] == 8);
+    const RankLayout l = cut_ranks_by_key(g, 2);
+    CHECK(l.rank_of(g.morton({7, 3})) == 0);
+    CHECK(l.rank_of(g.morton({0, 4})) == 1);
+    const auto peers = peer_ranks(g, l);
+    CHECK(peers[0] == std::vector<int>{1});
+    CHECK(peers[1] == std::vector<int>{0});
+
+    // Rank 0's halo cells for rank 1 are exactly its top row (y = 3).
+    std::vector<CellIndex> mine;
+    for (CellIndex c : all_cells_by_key(g))
+        if (l.rank_of(g.morton(g.unlinear(c))) == 0)
+            mine.push_back(c);
+    const auto targets = halo_targets(g, l, 0, peers[0], mine);
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+        const auto xy = g.unlinear(mine[k]);
+        CHECK(targets[k] == (xy[1] == 3 ? std::vector<int>{0} : std::vector<int>{}));
+    }
+}
+
+TEST_CASE("periodic wrap makes the first and last rank neighbours") {
+    // 9 cells along x, periodic; 3 ranks as three vertical slabs of the 1-row grid.
+    const auto g = CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(9, 1), 1.0, {true, false});
+    REQUIRE(g.dims[0] == 9);
+    REQUIRE(g.dims[1] == 1);
+    // Keys along a single row are increasing in x; cut at x = 3 and x = 6.
+    RankLayout l;
+    l.key_begin = {0, g.morton({3, 0}), g.morton({6, 0})};
+    const auto peers = peer_ranks(g, l);
+    CHECK(peers[0] == std::vector<int>{1, 2});
+    CHECK(peers[2] == std::vector<int>{0, 1});
+    // Rank 0 owns x = 0,1,2: x = 0 is a halo cell of rank 2 (through the seam), x = 2 of rank 1.
+    std::vector<CellIndex> mine{g.linear({0, 0}), g.linear({1, 0}), g.linear({2, 0})};
+    const auto t = halo_targets(g, l, 0, peers[0], mine);
+    CHECK(t[0] == std::vector<int>{1}); // peer index 1 = rank 2
+    CHECK(t[1].empty());
+    CHECK(t[2] == std::vector<int>{0}); // peer index 0 = rank 1
+}
+
+TEST_CASE("peer sets are symmetric in 3-D") {
+    const auto g = CellGrid<3>::make(Vec<3>(0, 0, 0), Vec<3>(6, 5, 4), 1.0, {true, false, false});
+    for (int ranks : {2, 3, 5, 7}) {
+        const RankLayout l = cut_ranks_by_key(g, ranks);
+        const auto peers = peer_ranks(g, l);
+        for (int r = 0; r < ranks; ++r)
+            for (int s : peers[static_cast<std::size_t>(r)]) {
+                const auto& back = peers[static_cast<std::size_t>(s)];
+                CHECK(std::find(back.begin(), back.end(), r) != back.end());
+                CHECK(s != r);
+            }
+    }
+}
+
+TEST_CASE("interval arithmetic of the overlap figures") {
+    std::vector<Interval> msgs{{0, 4}, {2, 6}, {10, 12}};
+    CHECK(union_length(msgs) == doctest::Approx(8.0));
+    // Tasks cover [1, 3] and [5, 11]: uncovered message time is [0,1] + [3,5] + [11,12] = 4.
+    CHECK(uncovered_length({{0, 4}, {2, 6}, {10, 12}}, {{1, 3}, {5, 11}}) == doctest::Approx(4.0));
+    CHECK(uncovered_length({{0, 1}}, {}) == doctest::Approx(1.0));
+    CHECK(uncovered_length({{0, 1}}, {{-1, 2}}) == doctest::Approx(0.0));
+}
