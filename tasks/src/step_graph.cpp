@@ -37,6 +37,13 @@ struct StepGraph::Impl {
     std::vector<std::unique_ptr<Node>> recvs; // exchange * peers + peer
     tbb::concurrent_queue<int> ready;         // packed sends, by (exchange * peers + peer)
     std::atomic<int> running{0};              // tasks executing right now
+    std::atomic<std::size_t> finished{0};     // nodes of this run that have completed
+    std::size_t total = 0;                    // nodes in the graph
+
+    void node_done() {
+        if (finished.fetch_add(1) + 1 == total)
+            finished.notify_one();
+    }
 };
 
 void StepGraph::guard(const std::function<void()>& f) {
@@ -51,6 +58,7 @@ void StepGraph::guard(const std::function<void()>& f) {
             error_ = std::current_exception();
     }
     --impl_->running;
+    impl_->node_done();
 }
 
 void StepGraph::record(std::size_t slot, int stage, int group, int exchange, double t0) {
@@ -76,6 +84,16 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
     send_buf_.assign(m, {});
     recv_buf_.assign(m, {});
 
+    // Boundary work is the critical path between ranks: a peer waits for what these tasks
+    // produce. Their tasks (and packing, unpacking) go before interior ones whenever both are
+    // ready, so interior work fills the time messages are in flight.
+    std::vector<bool> facing_any(static_cast<std::size_t>(groups_), false);
+    if (E > 0)
+        for (const auto& b : halo_.boundary)
+            for (int grp : b)
+                facing_any[static_cast<std::size_t>(grp)] = true;
+    const tbb::flow::node_priority_t urgent = 2, boundary = 1, interior = tbb::flow::no_priority;
+
     auto build = [&] {
         auto& g = impl_->graph;
         g = std::make_unique<tbb::flow::graph>();
@@ -84,12 +102,14 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
         for (int s = 0; s < stage_count(); ++s)
             for (int grp = 0; grp < groups_; ++grp) {
                 const std::size_t slot = static_cast<std::size_t>(s * groups_ + grp);
-                impl_->nodes.push_back(
-                    std::make_unique<Node>(*g, [this, s, grp, slot](const continue_msg&) {
+                impl_->nodes.push_back(std::make_unique<Node>(
+                    *g,
+                    [this, s, grp, slot](const continue_msg&) {
                         const double t0 = clock_seconds();
                         guard([&] { body_(s, grp); });
                         record(slot, s, grp, -1, t0);
-                    }));
+                    },
+                    facing_any[static_cast<std::size_t>(grp)] ? boundary : interior));
             }
         auto node = [&](int s, int grp) -> Node& {
             return *impl_->nodes[static_cast<std::size_t>(s * groups_ + grp)];
@@ -108,8 +128,13 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                 const auto k = static_cast<std::size_t>(e * P + p);
                 const int after = halo_.exchanges[static_cast<std::size_t>(e)].after_stage;
                 const auto& facing = halo_.boundary[static_cast<std::size_t>(p)];
-                impl_->sends.push_back(
-                    std::make_unique<Node>(*g, [this, e, p, k, n](const continue_msg&) {
+                impl_->sends.push_back(std::make_unique<Node>(
+                    *g,
+                    [this, e, p, k, n, after](const continue_msg&) {
+                        if (after < 0) {
+                            impl_->node_done(); // packed and sent by the main thread
+                            return;
+                        }
                         const double t0 = clock_seconds();
                         guard([&] {
                             send_buf_[k].clear();
@@ -117,14 +142,17 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                         });
                         record(n + k, -1, p, e, t0);
                         impl_->ready.push(static_cast<int>(k));
-                    }));
+                    },
+                    urgent));
                 // One predecessor more than the edges: the main thread's "message arrived".
-                impl_->recvs.push_back(
-                    std::make_unique<Node>(*g, 1, [this, e, p, k, n, m](const continue_msg&) {
+                impl_->recvs.push_back(std::make_unique<Node>(
+                    *g, 1,
+                    [this, e, p, k, n, m](const continue_msg&) {
                         const double t0 = clock_seconds();
                         guard([&] { halo_.data->unpack(e, p, recv_buf_[k]); });
                         record(n + m + k, -2, p, e, t0);
-                    }));
+                    },
+                    urgent));
                 Node& send = *impl_->sends.back();
                 Node& recv = *impl_->recvs.back();
                 if (after < 0 || facing.empty()) {
@@ -145,6 +173,7 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
         arena->execute(build);
     else
         build();
+    impl_->total = impl_->nodes.size() + impl_->sends.size() + impl_->recvs.size();
 }
 
 StepGraph::~StepGraph() {
@@ -162,6 +191,7 @@ StepGraph::~StepGraph() {
 
 void StepGraph::run() {
     run_begin_ = clock_seconds();
+    impl_->finished = 0;
     messages_.clear();
     if (halo_.active())
         run_with_messages();
@@ -205,9 +235,31 @@ void StepGraph::run_with_messages() {
                                  halo_.peers[static_cast<std::size_t>(p)], false,
                                  recv_buf_[k].size(), clock_seconds(), 0});
         }
+    std::size_t received = 0, sent = 0;
+    // The state at the start of the step is ready now: it leaves before any task runs, so
+    // the peers' boundary groups can start as early as possible.
+    for (int e = 0; e < E; ++e) {
+        if (halo_.exchanges[static_cast<std::size_t>(e)].after_stage >= 0)
+            continue;
+        for (int p = 0; p < P; ++p) {
+            const auto k = static_cast<std::size_t>(e * P + p);
+            const double t0 = clock_seconds();
+            send_buf_[k].clear();
+            halo_.data->pack(e, p, send_buf_[k]);
+            record(static_cast<std::size_t>(stage_count() * groups_) + k, -1, p, e, t0);
+            MPI_Isend(send_buf_[k].data(), static_cast<int>(send_buf_[k].size()), MPI_BYTE,
+                      halo_.peers[static_cast<std::size_t>(p)], kTagBase + e, MPI_COMM_WORLD,
+                      &sreq[k]);
+            Comm::count_sent(send_buf_[k].size());
+            smsg[k] = messages_.size();
+            messages_.push_back({halo_.exchanges[static_cast<std::size_t>(e)].name,
+                                 halo_.peers[static_cast<std::size_t>(p)], true,
+                                 send_buf_[k].size(), clock_seconds(), 0});
+            ++sent;
+        }
+    }
     impl_->start->try_put(continue_msg()); // from outside the arena: the workers take it
 
-    std::size_t received = 0, sent = 0;
     std::vector<int> idx(m);
     std::vector<double> arrived(m, -1);
     std::size_t delayed = 0; // arrived but not yet reported (injected delay)
@@ -258,16 +310,22 @@ void StepGraph::run_with_messages() {
                     clock_seconds();
         }
         // How fast to poll: a message matters at once when no task is running (the rank is
-        // waiting for it); while the workers compute, polling often only steals their core.
+        // waiting for it), so then the poll interval is short; while the workers compute,
+        // polling often only takes their core, so it backs off to 1 ms. Never a busy spin: a
+        // rank may share its cores with another rank's workers.
         if (progress) {
             backoff = std::chrono::microseconds(50);
         } else if (impl_->running.load() == 0) {
-            std::this_thread::yield();
+            std::this_thread::sleep_for(std::chrono::microseconds(10));
         } else {
             std::this_thread::sleep_for(backoff);
             backoff = std::min(2 * backoff, std::chrono::microseconds(1000));
         }
     }
+    // Wait for the last tasks without joining the arena: the main thread taking tasks would
+    // make T + 1 compute threads, more than the cores this rank was given.
+    for (std::size_t c = impl_->finished.load(); c < impl_->total; c = impl_->finished.load())
+        impl_->finished.wait(c);
     if (impl_->arena != nullptr)
         impl_->arena->execute([&] { impl_->graph->wait_for_all(); });
     else
