@@ -496,23 +496,25 @@ bool Simulation<D>::maybe_rebalance(const std::vector<double>& busy_per_rank) {
     if (!due)
         return false;
 
-    // Every rank offers its groups as units of the curve with their measured cost; all ranks
-    // compute the same new cut points from the same gathered list.
+    // Every rank offers its occupied cells as units of the curve, each with its share (by
+    // particle count) of its group's measured cost per step; all ranks compute the same new cut
+    // points from the same gathered list.
     const double t0 = tasks::clock_seconds();
     tasks::Bytes mine;
     for (int g = 0; g < topo_.group_count(); ++g) {
         const auto& cells = topo_.cells[static_cast<std::size_t>(g)];
-        if (cells.empty())
-            continue;
         double particles = 0;
         for (CellIndex c : cells)
             particles += ranges_.end[c] - ranges_.begin[c];
-        const double cost =
-            cfg_.balance_cost == BalanceCost::time && graph_steps_ > 0
-                ? group_busy_[static_cast<std::size_t>(g)] / static_cast<double>(graph_steps_)
-                : particles;
-        tasks::put(mine, grid_.morton(grid_.unlinear(cells.front())));
-        tasks::put(mine, cost);
+        const bool timed = cfg_.balance_cost == BalanceCost::time && graph_steps_ > 0;
+        const double per_particle = timed && particles > 0
+                                        ? group_busy_[static_cast<std::size_t>(g)] /
+                                              static_cast<double>(graph_steps_) / particles
+                                        : 1.0;
+        for (CellIndex c : cells) {
+            tasks::put(mine, grid_.morton(grid_.unlinear(c)));
+            tasks::put(mine, per_particle * (ranges_.end[c] - ranges_.begin[c]));
+        }
     }
     std::vector<tasks::CurveUnit> units;
     for (const auto& b : comm_.all_gather(mine)) {
@@ -526,8 +528,16 @@ bool Simulation<D>::maybe_rebalance(const std::vector<double>& busy_per_rank) {
     }
     const tasks::RankLayout next = tasks::cut_ranks(units, comm_.size());
     std::vector<double> predicted(static_cast<std::size_t>(comm_.size()), 0.0);
-    for (const auto& u : units)
+    std::vector<double> now = predicted;
+    for (const auto& u : units) {
         predicted[static_cast<std::size_t>(next.rank_of(u.key))] += u.cost;
+        now[static_cast<std::size_t>(layout_.rank_of(u.key))] += u.cost;
+    }
+    // Moving particles costs a step's worth of communication: only when it pays. Judged on
+    // the same per-unit costs for the present and the new cuts, so noise cancels.
+    if (!every &&
+        tasks::imbalance(predicted) > tasks::imbalance(now) - cfg_.rebalance_threshold / 2)
+        return false;
 
     // Every particle goes to its owner under the new cuts.
     std::vector<tasks::Bytes> out(static_cast<std::size_t>(comm_.size())), in;

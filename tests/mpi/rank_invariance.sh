@@ -56,3 +56,22 @@ check_case dam_break_2d dam_break_2d.toml --set particles.dx=0.02 --set time.end
 check_case dam_break_3d dam_break_3d.toml --set time.end_time=0.02 \
     --set time.output_interval=0.005 --set runtime.rebalance_every=15 \
     --set 'runtime.initial_decomposition="key-range"'
+
+# --trace writes one Chrome/Perfetto trace for all ranks: tasks of every stage on worker
+# tracks and messages with peer and size on each rank's MPI track.
+"$mpiexec" --oversubscribe -np 2 "$exe" run "$src/cases/dam_break_2d.toml" --out "$work/trace" \
+    --threads 1 -q --set particles.dx=0.02 --set time.end_time=0.01 --trace "$work/trace.json"
+/usr/bin/python3 - "$work/trace.json" <<'PY'
+import json, sys
+events = json.load(open(sys.argv[1]))["traceEvents"]
+slices = [e for e in events if e.get("ph") == "X"]
+ranks = {e["pid"] for e in slices}
+names = {e["name"] for e in slices}
+assert ranks == {0, 1}, ranks
+for stage in ("density", "walls", "accel", "kick", "drift"):
+    assert stage in names, stage
+msgs = [e for e in slices if e["name"].startswith(("send ", "recv "))]
+assert msgs and all("bytes" in e["args"] and "peer" in e["args"] for e in msgs)
+assert all(e["dur"] >= 0 for e in slices)
+print(f"ok trace: {len(slices)} slices, {len(msgs)} messages, ranks {sorted(ranks)}")
+PY
