@@ -264,7 +264,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     const auto mine = profile_numbers(sim);
     const auto gathered = sim.comm().gather(std::span<const std::byte>(
         reinterpret_cast<const std::byte*>(mine.data()), mine.size() * sizeof(double)));
-    double rebin_max = sim.rebin_seconds_total();
+    const double rebin_seconds = sim.rebin_seconds_total(); // rank 0's
     if (!root)
         return result;
 
@@ -281,7 +281,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     nlohmann::json extra;
     const auto& graph = sim.graph();
     extra["stage_busy_seconds"] = parallel["total"]["stage_busy_seconds"];
-    extra["rebin_seconds"] = rebin_max;
+    extra["rebin_seconds"] = rebin_seconds;
     extra["cell_groups"] = graph.group_count();
     extra["decompositions"] = sim.decompositions();
     extra["last_dt"] = sim.dt();

@@ -57,153 +57,6 @@ std::vector<Plane<D>> reflective_planes(const CaseConfig& cfg) {
 
 } // namespace
 
-// The halo exchanges of one step (docs/ARCHITECTURE.md, "Halo exchanges"). Each carries what
-// the next stage reads of particles owned by a peer:
-//   state     (start of step)  id, kind, x, v, rho, mass      -> density, walls, accel
-//   pressure  (after density)  p, and rho (summation) or the   -> walls, accel, drift
-//                              renormalised grad rho (delta-SPH)
-//   walls     (after walls)    wall particles: p, rho, mass, v_bc -> accel
-//   velocity  (after kick)     fluid particles: v^{n+1/2}       -> drift (continuity)
-template <int D>
-class Simulation<D>::Halo final : public tasks::HaloData {
-public:
-    enum class What { state, pressure, walls, velocity };
-    explicit Halo(Simulation& s) : s_(s) {}
-    std::vector<What> what; // per exchange of the graph
-
-    [[nodiscard]] std::size_t recv_bytes(int e, int p) const override {
-        const auto k = static_cast<std::size_t>(p);
-        const std::size_t n = s_.recv_count_[k], w = s_.recv_walls_[k];
-        switch (what[static_cast<std::size_t>(e)]) {
-        case What::state:
-            return n * state_bytes;
-        case What::pressure:
-            return n * pressure_bytes();
-        case What::walls:
-            return w * wall_bytes;
-        case What::velocity:
-            return (n - w) * sizeof(Vec<D>);
-        }
-        return 0;
-    }
-
-    void pack(int e, int p, tasks::Bytes& out) override {
-        using messages::put_raw;
-        const Particles<D>& P = s_.P_;
-        const What kind = what[static_cast<std::size_t>(e)];
-        out.reserve(recv_like_bytes(kind, static_cast<std::size_t>(p)));
-        for (CellIndex c : s_.send_cells_[static_cast<std::size_t>(p)])
-            for (std::uint32_t i = s_.ranges_.begin[c]; i < s_.ranges_.end[c]; ++i)
-                switch (kind) {
-                case What::state:
-                    put_raw(out, P.id[i]);
-                    put_raw(out, P.kind[i]);
-                    put_raw(out, P.x[i]);
-                    put_raw(out, P.v[i]);
-                    put_raw(out, P.rho[i]);
-                    put_raw(out, P.mass[i]);
-                    break;
-                case What::pressure:
-                    put_raw(out, P.p[i]);
-                    if (summation())
-                        put_raw(out, P.rho[i]);
-                    if (gradient())
-                        put_raw(out, P.grad_rho[i]);
-                    break;
-                case What::walls:
-                    if (P.kind[i] != Kind::wall)
-                        break;
-                    put_raw(out, P.p[i]);
-                    put_raw(out, P.rho[i]);
-                    put_raw(out, P.mass[i]);
-                    put_raw(out, P.v_bc[i]);
-                    break;
-                case What::velocity:
-                    if (P.kind[i] == Kind::fluid)
-                        put_raw(out, P.v_half[i]);
-                    break;
-                }
-    }
-
-    void unpack(int e, int p, std::span<const std::byte> in) override {
-        using messages::get_raw;
-        Particles<D>& P = s_.P_;
-        const auto k = static_cast<std::size_t>(p);
-        const std::size_t first = s_.recv_offset_[k], last = first + s_.recv_count_[k];
-        std::size_t pos = 0;
-        switch (what[static_cast<std::size_t>(e)]) {
-        case What::state:
-            for (std::size_t i = first; i < last; ++i) {
-                get_raw(in, pos, P.id[i]);
-                get_raw(in, pos, P.kind[i]);
-                get_raw(in, pos, P.x[i]);
-                get_raw(in, pos, P.v[i]);
-                get_raw(in, pos, P.rho[i]);
-                get_raw(in, pos, P.mass[i]);
-            }
-            // The peer sent whole cells in key order: each halo cell is one contiguous run.
-            for (std::size_t i = first; i < last;) {
-                const CellIndex c = s_.grid_.linear(s_.grid_.coords(P.x[i]));
-                std::size_t j = i + 1;
-                while (j < last && s_.grid_.linear(s_.grid_.coords(P.x[j])) == c)
-                    ++j;
-                s_.ranges_.begin[c] = static_cast<std::uint32_t>(i);
-                s_.ranges_.end[c] = static_cast<std::uint32_t>(j);
-                i = j;
-            }
-            break;
-        case What::pressure:
-            for (std::size_t i = first; i < last; ++i) {
-                get_raw(in, pos, P.p[i]);
-                if (summation())
-                    get_raw(in, pos, P.rho[i]);
-                if (gradient())
-                    get_raw(in, pos, P.grad_rho[i]);
-            }
-            break;
-        case What::walls:
-            for (std::size_t i = first; i < last; ++i)
-                if (P.kind[i] == Kind::wall) {
-                    get_raw(in, pos, P.p[i]);
-                    get_raw(in, pos, P.rho[i]);
-                    get_raw(in, pos, P.mass[i]);
-                    get_raw(in, pos, P.v_bc[i]);
-                }
-            break;
-        case What::velocity:
-            for (std::size_t i = first; i < last; ++i)
-                if (P.kind[i] == Kind::fluid)
-                    get_raw(in, pos, P.v_half[i]);
-            break;
-        }
-    }
-
-private:
-    static constexpr std::size_t state_bytes =
-        sizeof(ParticleId) + sizeof(Kind) + 2 * sizeof(Vec<D>) + 2 * sizeof(Real);
-    static constexpr std::size_t wall_bytes = 3 * sizeof(Real) + sizeof(Vec<D>);
-    [[nodiscard]] bool summation() const { return !s_.continuity_; }
-    [[nodiscard]] bool gradient() const { return s_.continuity_ && s_.delta_h_c0_ > 0; }
-    [[nodiscard]] std::size_t pressure_bytes() const {
-        return sizeof(Real) + (summation() ? sizeof(Real) : 0) + (gradient() ? sizeof(Vec<D>) : 0);
-    }
-    [[nodiscard]] std::size_t recv_like_bytes(What kind, std::size_t p) const {
-        const std::size_t n = s_.send_count_[p], w = s_.send_walls_[p];
-        switch (kind) {
-        case What::state:
-            return n * state_bytes;
-        case What::pressure:
-            return n * pressure_bytes();
-        case What::walls:
-            return w * wall_bytes;
-        case What::velocity:
-            return (n - w) * sizeof(Vec<D>);
-        }
-        return 0;
-    }
-    Simulation& s_;
-};
-
 template <int D>
 Simulation<D>::~Simulation() {
     graph_.reset(); // before the arena and the halo it uses
@@ -285,7 +138,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts)
                                  : std::max(1, std::min(allowed, tbb::info::default_concurrency()) -
                                                    (comm_.parallel() ? 1 : 0));
     arena_ = std::make_unique<tbb::task_arena>(threads_ + (comm_.parallel() ? 1 : 0), 1);
-    halo_ = std::make_unique<Halo>(*this);
+    halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_,
+                                            continuity_ && delta_h_c0_ > 0);
     window_busy_.assign(static_cast<std::size_t>(comm_.size()), 0.0);
 
     distribute_initial_particles();
@@ -389,9 +243,9 @@ void Simulation<D>::plan_halo() {
     for (const auto& c : occupied_)
         cells.push_back(c.cell);
     occupied_targets_ = tasks::halo_targets(grid_, layout_, comm_.rank(), peers_, cells);
-    send_cells_.assign(P, {});
-    send_count_.assign(P, 0);
-    send_walls_.assign(P, 0);
+    plan_.send_cells.assign(P, {});
+    plan_.send_count.assign(P, 0);
+    plan_.send_walls.assign(P, 0);
     for (std::size_t k = 0; k < cells.size(); ++k) {
         if (occupied_targets_[k].empty())
             continue;
@@ -400,29 +254,29 @@ void Simulation<D>::plan_halo() {
             walls += P_.kind[i] == Kind::wall ? 1 : 0;
         for (int p : occupied_targets_[k]) {
             const auto pu = static_cast<std::size_t>(p);
-            send_cells_[pu].push_back(cells[k]);
-            send_count_[pu] += occupied_[k].count;
-            send_walls_[pu] += walls;
+            plan_.send_cells[pu].push_back(cells[k]);
+            plan_.send_count[pu] += occupied_[k].count;
+            plan_.send_walls[pu] += walls;
         }
     }
     // Each peer learns how many particles (and walls) it will receive, so that it can size
     // its arrays and post exact receives before the step starts.
     std::vector<tasks::Bytes> out(P), in;
     for (std::size_t p = 0; p < P; ++p) {
-        tasks::put(out[p], static_cast<std::uint64_t>(send_count_[p]));
-        tasks::put(out[p], static_cast<std::uint64_t>(send_walls_[p]));
+        tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_count[p]));
+        tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_walls[p]));
     }
     comm_.exchange(peers_, out, in, 12);
-    recv_count_.assign(P, 0);
-    recv_walls_.assign(P, 0);
-    recv_offset_.assign(P, 0);
+    plan_.recv_count.assign(P, 0);
+    plan_.recv_walls.assign(P, 0);
+    plan_.recv_offset.assign(P, 0);
     std::size_t next = owned_;
     for (std::size_t p = 0; p < P; ++p) {
         std::size_t pos = 0;
-        recv_count_[p] = tasks::take<std::uint64_t>(in[p], pos);
-        recv_walls_[p] = tasks::take<std::uint64_t>(in[p], pos);
-        recv_offset_[p] = next;
-        next += recv_count_[p];
+        plan_.recv_count[p] = tasks::take<std::uint64_t>(in[p], pos);
+        plan_.recv_walls[p] = tasks::take<std::uint64_t>(in[p], pos);
+        plan_.recv_offset[p] = next;
+        next += plan_.recv_count[p];
     }
     P_.resize(next);
     between_.push_back({"halo counts", -1, true, 16 * P, t0, tasks::clock_seconds()});
@@ -462,7 +316,7 @@ void Simulation<D>::migrate_to_neighbours() {
             throw std::logic_error(fmt::format("particle {} jumped to rank {}, not a neighbour "
                                                "of rank {}",
                                                P_.id[i], owner, comm_.rank()));
-        messages::pack_migrant(P_, i, out[static_cast<std::size_t>(it - peers_.begin())]);
+        messages::pack_particle(P_, i, out[static_cast<std::size_t>(it - peers_.begin())]);
     }
     comm_.exchange(peers_, out, in, 11);
     std::size_t bytes = 0;
@@ -473,7 +327,7 @@ void Simulation<D>::migrate_to_neighbours() {
         P_.resize(keep.size());
     }
     for (const auto& b : in)
-        messages::unpack_migrants<D>(b, P_);
+        messages::unpack_particles<D>(b, P_);
     between_.push_back({"migrate", -1, true, bytes, t0, tasks::clock_seconds()});
 }
 
@@ -548,7 +402,7 @@ bool Simulation<D>::maybe_rebalance(const std::vector<double>& busy_per_rank) {
         if (owner == comm_.rank()) {
             keep.push_back(i);
         } else {
-            messages::pack_migrant(P_, i, out[static_cast<std::size_t>(owner)]);
+            messages::pack_particle(P_, i, out[static_cast<std::size_t>(owner)]);
             ++moved;
         }
     }
@@ -556,7 +410,7 @@ bool Simulation<D>::maybe_rebalance(const std::vector<double>& busy_per_rank) {
     P_.permute(keep);
     P_.resize(keep.size());
     for (const auto& b : in)
-        messages::unpack_migrants<D>(b, P_);
+        messages::unpack_particles<D>(b, P_);
     std::uint64_t moved_total = 0;
     for (const auto& b : comm_.all_gather(std::span<const std::byte>(
              reinterpret_cast<const std::byte*>(&moved), sizeof(moved)))) {
@@ -605,7 +459,7 @@ void Simulation<D>::build_graph() {
 
     tasks::HaloWiring wiring;
     if (comm_.parallel()) {
-        using What = typename Halo::What;
+        using What = typename HaloFields<D>::What;
         auto stage_of = [&](StageKind k) {
             return static_cast<int>(std::find(stage_kinds_.begin(), stage_kinds_.end(), k) -
                                     stage_kinds_.begin());
@@ -844,13 +698,13 @@ Particles<D> Simulation<D>::gather_particles() const {
         return copy;
     }
     tasks::Bytes mine;
-    mine.reserve(owned_ * messages::output_bytes<D>);
+    mine.reserve(owned_ * messages::particle_bytes<D>);
     for (std::size_t i = 0; i < owned_; ++i)
-        messages::pack_output(P_, i, mine);
+        messages::pack_particle(P_, i, mine);
     Particles<D> out;
     // Ranks own consecutive runs of the curve, so rank order is (cell key, id) order.
     for (const auto& b : comm_.gather(mine, 0))
-        messages::unpack_output<D>(b, out);
+        messages::unpack_particles<D>(b, out);
     return out;
 }
 

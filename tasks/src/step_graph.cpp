@@ -236,6 +236,18 @@ void StepGraph::run_with_messages() {
                                  recv_buf_[k].size(), clock_seconds(), 0});
         }
     std::size_t received = 0, sent = 0;
+    // Posts the packed buffer of (exchange, peer) slot k.
+    auto post_send = [&](std::size_t k) {
+        const int e = static_cast<int>(k) / P;
+        const auto p = k % static_cast<std::size_t>(P);
+        MPI_Isend(send_buf_[k].data(), static_cast<int>(send_buf_[k].size()), MPI_BYTE,
+                  halo_.peers[p], kTagBase + e, MPI_COMM_WORLD, &sreq[k]);
+        Comm::count_sent(send_buf_[k].size());
+        smsg[k] = messages_.size();
+        messages_.push_back({halo_.exchanges[static_cast<std::size_t>(e)].name, halo_.peers[p],
+                             true, send_buf_[k].size(), clock_seconds(), 0});
+        ++sent;
+    };
     // The state at the start of the step is ready now: it leaves before any task runs, so
     // the peers' boundary groups can start as early as possible.
     for (int e = 0; e < E; ++e) {
@@ -247,15 +259,7 @@ void StepGraph::run_with_messages() {
             send_buf_[k].clear();
             halo_.data->pack(e, p, send_buf_[k]);
             record(static_cast<std::size_t>(stage_count() * groups_) + k, -1, p, e, t0);
-            MPI_Isend(send_buf_[k].data(), static_cast<int>(send_buf_[k].size()), MPI_BYTE,
-                      halo_.peers[static_cast<std::size_t>(p)], kTagBase + e, MPI_COMM_WORLD,
-                      &sreq[k]);
-            Comm::count_sent(send_buf_[k].size());
-            smsg[k] = messages_.size();
-            messages_.push_back({halo_.exchanges[static_cast<std::size_t>(e)].name,
-                                 halo_.peers[static_cast<std::size_t>(p)], true,
-                                 send_buf_[k].size(), clock_seconds(), 0});
-            ++sent;
+            post_send(k);
         }
     }
     impl_->start->try_put(continue_msg()); // from outside the arena: the workers take it
@@ -268,17 +272,7 @@ void StepGraph::run_with_messages() {
         bool progress = false;
         int k = 0;
         while (impl_->ready.try_pop(k)) {
-            const auto ku = static_cast<std::size_t>(k);
-            const int e = k / P, p = k % P;
-            MPI_Isend(send_buf_[ku].data(), static_cast<int>(send_buf_[ku].size()), MPI_BYTE,
-                      halo_.peers[static_cast<std::size_t>(p)], kTagBase + e, MPI_COMM_WORLD,
-                      &sreq[ku]);
-            Comm::count_sent(send_buf_[ku].size());
-            smsg[ku] = messages_.size();
-            messages_.push_back({halo_.exchanges[static_cast<std::size_t>(e)].name,
-                                 halo_.peers[static_cast<std::size_t>(p)], true,
-                                 send_buf_[ku].size(), clock_seconds(), 0});
-            ++sent;
+            post_send(static_cast<std::size_t>(k));
             progress = true;
         }
         if (received < m) {

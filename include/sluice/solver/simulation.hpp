@@ -11,6 +11,7 @@
 #include "sluice/physics/momentum.hpp"
 #include "sluice/physics/timestep.hpp"
 #include "sluice/physics/walls.hpp"
+#include "sluice/solver/halo_fields.hpp"
 #include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
 #include "sluice/tasks/profile.hpp"
@@ -105,7 +106,6 @@ public:
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
 
 private:
-    class Halo;
     void distribute_initial_particles();
     void rebin_and_decompose();
     void migrate_to_neighbours();
@@ -163,10 +163,9 @@ private:
     tasks::RankLayout layout_;
     std::vector<int> peers_;
     std::size_t owned_ = 0;
-    std::vector<std::vector<CellIndex>> send_cells_; // per peer, in key order
-    std::vector<std::size_t> send_count_, send_walls_, recv_count_, recv_walls_, recv_offset_;
+    HaloPlan plan_;
     std::vector<std::vector<int>> occupied_targets_; // per occupied cell: peers it is halo of
-    std::unique_ptr<Halo> halo_;
+    std::unique_ptr<HaloFields<D>> halo_;
     std::vector<tasks::MessageRecord> between_; // communication outside the last graph
     tasks::RankProfile profile_;
     std::unique_ptr<tasks::TraceRecorder> trace_;

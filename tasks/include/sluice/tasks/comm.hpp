@@ -66,17 +66,22 @@ private:
     int rank_ = 0, size_ = 1;
 };
 
-// Packs/unpacks trivially copyable values into byte buffers.
+// Packs/unpacks plain values (numbers, fixed-size vectors) as raw bytes.
 template <class T>
 void put(Bytes& b, const T& v) {
-    const auto* p = reinterpret_cast<const std::byte*>(&v);
-    b.insert(b.end(), p, p + sizeof(T));
+    const std::size_t n = b.size();
+    b.resize(n + sizeof(T));
+    std::memcpy(b.data() + n, static_cast<const void*>(&v), sizeof(T));
+}
+template <class T>
+void take_into(std::span<const std::byte> b, std::size_t& pos, T& v) {
+    std::memcpy(static_cast<void*>(&v), b.data() + pos, sizeof(T));
+    pos += sizeof(T);
 }
 template <class T>
 T take(std::span<const std::byte> b, std::size_t& pos) {
-    T v;
-    std::memcpy(&v, b.data() + pos, sizeof(T));
-    pos += sizeof(T);
+    T v{};
+    take_into(b, pos, v);
     return v;
 }
 

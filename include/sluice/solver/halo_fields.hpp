@@ -1,0 +1,157 @@
+#pragma once
+// The particle fields of the halo exchanges of one step (docs/ARCHITECTURE.md, "Halo
+// exchanges"). Each carries what the next stage reads of particles owned by a peer:
+//   state     (start of step)  id, kind, x, v, rho, mass         -> density, walls, accel
+//   pressure  (after density)  p, and rho (summation) or the      -> walls, accel, drift
+//                              renormalised grad rho (delta-SPH)
+//   walls     (after walls)    wall particles: p, rho, mass, v_bc -> accel
+//   velocity  (after kick)     fluid particles: v^{n+1/2}         -> drift (continuity)
+// Pure data movement between the particle arrays and byte buffers; the step graph decides
+// when, MPI is the runtime's.
+#include "sluice/core/cell_grid.hpp"
+#include "sluice/core/particles.hpp"
+#include "sluice/tasks/step_graph.hpp"
+
+#include <vector>
+
+namespace sluice {
+
+// Who sends what to each peer this step (filled between steps).
+struct HaloPlan {
+    std::vector<std::vector<CellIndex>> send_cells;  // per peer, this rank's cells in key order
+    std::vector<std::size_t> send_count, send_walls; // particles (and walls among them) sent
+    std::vector<std::size_t> recv_count, recv_walls; // particles (and walls) received
+    std::vector<std::size_t> recv_offset;            // where each peer's halo starts in P
+};
+
+template <int D>
+class HaloFields final : public tasks::HaloData {
+public:
+    enum class What { state, pressure, walls, velocity };
+    std::vector<What> what; // per exchange of the graph
+
+    HaloFields(Particles<D>& P, CellRanges& ranges, const CellGrid<D>& grid, const HaloPlan& plan,
+               bool summation, bool gradient)
+        : P_(P), ranges_(ranges), grid_(grid), plan_(plan), summation_(summation),
+          gradient_(gradient) {}
+
+    [[nodiscard]] std::size_t recv_bytes(int e, int p) const override {
+        const auto k = static_cast<std::size_t>(p);
+        return bytes(what[static_cast<std::size_t>(e)], plan_.recv_count[k], plan_.recv_walls[k]);
+    }
+
+    void pack(int e, int p, tasks::Bytes& out) override {
+        using tasks::put;
+        const What kind = what[static_cast<std::size_t>(e)];
+        const auto k = static_cast<std::size_t>(p);
+        out.reserve(bytes(kind, plan_.send_count[k], plan_.send_walls[k]));
+        for (CellIndex c : plan_.send_cells[k])
+            for (std::uint32_t i = ranges_.begin[c]; i < ranges_.end[c]; ++i)
+                switch (kind) {
+                case What::state:
+                    put(out, P_.id[i]);
+                    put(out, P_.kind[i]);
+                    put(out, P_.x[i]);
+                    put(out, P_.v[i]);
+                    put(out, P_.rho[i]);
+                    put(out, P_.mass[i]);
+                    break;
+                case What::pressure:
+                    put(out, P_.p[i]);
+                    if (summation_)
+                        put(out, P_.rho[i]);
+                    if (gradient_)
+                        put(out, P_.grad_rho[i]);
+                    break;
+                case What::walls:
+                    if (P_.kind[i] != Kind::wall)
+                        break;
+                    put(out, P_.p[i]);
+                    put(out, P_.rho[i]);
+                    put(out, P_.mass[i]);
+                    put(out, P_.v_bc[i]);
+                    break;
+                case What::velocity:
+                    if (P_.kind[i] == Kind::fluid)
+                        put(out, P_.v_half[i]);
+                    break;
+                }
+    }
+
+    void unpack(int e, int p, std::span<const std::byte> in) override {
+        using tasks::take_into;
+        const auto k = static_cast<std::size_t>(p);
+        const std::size_t first = plan_.recv_offset[k], last = first + plan_.recv_count[k];
+        std::size_t pos = 0;
+        switch (what[static_cast<std::size_t>(e)]) {
+        case What::state:
+            for (std::size_t i = first; i < last; ++i) {
+                take_into(in, pos, P_.id[i]);
+                take_into(in, pos, P_.kind[i]);
+                take_into(in, pos, P_.x[i]);
+                take_into(in, pos, P_.v[i]);
+                take_into(in, pos, P_.rho[i]);
+                take_into(in, pos, P_.mass[i]);
+            }
+            // The peer sent whole cells in key order: each halo cell is one contiguous run.
+            for (std::size_t i = first; i < last;) {
+                const CellIndex c = grid_.linear(grid_.coords(P_.x[i]));
+                std::size_t j = i + 1;
+                while (j < last && grid_.linear(grid_.coords(P_.x[j])) == c)
+                    ++j;
+                ranges_.begin[c] = static_cast<std::uint32_t>(i);
+                ranges_.end[c] = static_cast<std::uint32_t>(j);
+                i = j;
+            }
+            break;
+        case What::pressure:
+            for (std::size_t i = first; i < last; ++i) {
+                take_into(in, pos, P_.p[i]);
+                if (summation_)
+                    take_into(in, pos, P_.rho[i]);
+                if (gradient_)
+                    take_into(in, pos, P_.grad_rho[i]);
+            }
+            break;
+        case What::walls:
+            for (std::size_t i = first; i < last; ++i)
+                if (P_.kind[i] == Kind::wall) {
+                    take_into(in, pos, P_.p[i]);
+                    take_into(in, pos, P_.rho[i]);
+                    take_into(in, pos, P_.mass[i]);
+                    take_into(in, pos, P_.v_bc[i]);
+                }
+            break;
+        case What::velocity:
+            for (std::size_t i = first; i < last; ++i)
+                if (P_.kind[i] == Kind::fluid)
+                    take_into(in, pos, P_.v_half[i]);
+            break;
+        }
+    }
+
+private:
+    // Bytes of one exchange for n particles of which w are walls.
+    [[nodiscard]] std::size_t bytes(What kind, std::size_t n, std::size_t w) const {
+        switch (kind) {
+        case What::state:
+            return n * (sizeof(ParticleId) + sizeof(Kind) + 2 * sizeof(Vec<D>) + 2 * sizeof(Real));
+        case What::pressure:
+            return n * (sizeof(Real) + (summation_ ? sizeof(Real) : 0) +
+                        (gradient_ ? sizeof(Vec<D>) : 0));
+        case What::walls:
+            return w * (3 * sizeof(Real) + sizeof(Vec<D>));
+        case What::velocity:
+            return (n - w) * sizeof(Vec<D>);
+        }
+        return 0;
+    }
+
+    Particles<D>& P_;
+    CellRanges& ranges_;
+    const CellGrid<D>& grid_;
+    const HaloPlan& plan_;
+    bool summation_, gradient_;
+};
+
+} // namespace sluice
