@@ -48,6 +48,13 @@ struct CellGrid {
     static CellGrid make(const Vec<D>& lo, const Vec<D>& hi, Real min_edge,
                          const std::array<bool, D>& periodic);
 
+    [[nodiscard]] bool any_periodic() const {
+        for (int d = 0; d < D; ++d)
+            if (periodic[d])
+                return true;
+        return false;
+    }
+
     [[nodiscard]] std::size_t cell_count() const {
         std::size_t n = 1;
         for (int d = 0; d < D; ++d)

@@ -25,7 +25,9 @@ struct NeighbourList {
     std::uint32_t first = 0;           // index of the first particle of the range
     std::vector<std::uint32_t> offset; // pairs of particle first + k: [offset[k], offset[k+1])
     std::vector<std::uint32_t> j;      // neighbour index
-    std::vector<Vec<D>> shift;         // periodic image shift added to x_i - x_j
+    std::vector<Vec<D>> shift;         // periodic image shift added to x_i - x_j (empty when
+                                       // no axis is periodic: every shift is then zero)
+    std::vector<Real> factor;          // per pair: the radial factor given to build_list
     [[nodiscard]] bool covers(std::uint32_t i) const {
         return i >= first && i + 1 < first + offset.size();
     }
@@ -53,10 +55,19 @@ struct Neighbourhood {
         if (list != nullptr && list->covers(i)) {
             const std::uint32_t k = i - list->first;
             const Vec<D> xi = x[i];
-            for (std::uint32_t p = list->offset[k]; p < list->offset[k + 1]; ++p) {
-                const std::uint32_t j = list->j[p];
-                const Vec<D> dx = xi + list->shift[p] - x[j];
-                f(j, dx, dx.squaredNorm());
+            const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
+            if (list->shift.empty()) {
+                for (std::uint32_t p = b; p < e; ++p) {
+                    const std::uint32_t j = list->j[p];
+                    const Vec<D> dx = xi - x[j];
+                    f(j, dx, dx.squaredNorm());
+                }
+            } else {
+                for (std::uint32_t p = b; p < e; ++p) {
+                    const std::uint32_t j = list->j[p];
+                    const Vec<D> dx = xi + list->shift[p] - x[j];
+                    f(j, dx, dx.squaredNorm());
+                }
             }
             return;
         }
@@ -75,15 +86,50 @@ struct Neighbourhood {
         }
     }
 
+    // As for_each_neighbour, and also passes factor(r2) for the pair: taken from the list
+    // when it holds factors (computed once per step by build_list with the same function, so
+    // the value is bitwise the same), computed here otherwise. The kernel gradient factor
+    // (dW/dr)/r is what every gradient sum needs, and sqrt + kernel per pair is most of a
+    // stage's arithmetic: three stages of a step share one evaluation.
+    template <class G, class F>
+    void for_each_pair(const AdjacentCells<D>& adj, std::uint32_t i, const G& factor, F&& f) const {
+        if (list != nullptr && !list->factor.empty() && list->covers(i)) {
+            const std::uint32_t k = i - list->first;
+            const Vec<D> xi = x[i];
+            const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
+            if (list->shift.empty()) {
+                for (std::uint32_t p = b; p < e; ++p) {
+                    const std::uint32_t j = list->j[p];
+                    const Vec<D> dx = xi - x[j];
+                    f(j, dx, dx.squaredNorm(), list->factor[p]);
+                }
+            } else {
+                for (std::uint32_t p = b; p < e; ++p) {
+                    const std::uint32_t j = list->j[p];
+                    const Vec<D> dx = xi + list->shift[p] - x[j];
+                    f(j, dx, dx.squaredNorm(), list->factor[p]);
+                }
+            }
+            return;
+        }
+        for_each_neighbour(
+            adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) { f(j, dx, r2, factor(r2)); });
+    }
+
     // Fills `out` with the neighbours of the particles of `cells`, which must be contiguous
-    // in the particle arrays and given in storage order (a cell group's cells).
-    void build_list(std::span<const CellIndex> group_cells, NeighbourList<D>& out) const {
+    // in the particle arrays and given in storage order (a cell group's cells), and with
+    // factor(r2) for every pair (see for_each_pair).
+    template <class G>
+    void build_list(std::span<const CellIndex> group_cells, NeighbourList<D>& out,
+                    const G& factor) const {
         out.offset.clear();
         out.j.clear();
         out.shift.clear();
+        out.factor.clear();
         out.first = group_cells.empty() ? 0 : cells->begin[group_cells.front()];
         out.offset.push_back(0);
         const Real support2 = support * support;
+        const bool periodic = grid->any_periodic();
         for (CellIndex c : group_cells) {
             const AdjacentCells<D> adj = adjacent(c);
             for (std::uint32_t i = cells->begin[c]; i < cells->end[c]; ++i) {
@@ -91,11 +137,15 @@ struct Neighbourhood {
                 for (int k = 0; k < adj.count; ++k) {
                     const CellIndex nc = adj.cell[k].cell;
                     const Vec<D> xis = xi + adj.cell[k].shift;
-                    for (std::uint32_t j = cells->begin[nc]; j < cells->end[nc]; ++j)
-                        if ((xis - x[j]).squaredNorm() < support2) {
+                    for (std::uint32_t j = cells->begin[nc]; j < cells->end[nc]; ++j) {
+                        const Real r2 = (xis - x[j]).squaredNorm();
+                        if (r2 < support2) {
                             out.j.push_back(j);
-                            out.shift.push_back(adj.cell[k].shift);
+                            out.factor.push_back(factor(r2));
+                            if (periodic)
+                                out.shift.push_back(adj.cell[k].shift);
                         }
+                    }
                 }
                 out.offset.push_back(static_cast<std::uint32_t>(out.j.size()));
             }

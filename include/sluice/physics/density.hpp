@@ -35,16 +35,17 @@ template <int D, class K>
 void renormalised_density_gradient(const Neighbourhood<D>& nb, const K& kernel, CellIndex c,
                                    const Particles<D>& P, std::span<Vec<D>> grad_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
+    const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
         Mat<D> M = Mat<D>::Zero();
         Vec<D> g = Vec<D>::Zero();
         const Real rho_i = P.rho[i];
-        nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) {
+        nb.for_each_pair(adj, i, F, [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real Fij) {
             if (P.kind[j] != Kind::fluid || r2 <= 0)
                 return;
-            const Vec<D> gradW = grad_W<D>(kernel, dx, std::sqrt(r2));
+            const Vec<D> gradW = Fij * dx;
             const Real Vj = P.mass[j] / P.rho[j];
             M -= Vj * gradW * dx.transpose(); // x_j - x_i = -dx
             g += (P.rho[j] - rho_i) * Vj * gradW;
@@ -64,6 +65,7 @@ template <int D, class K>
 void continuity_rate(const Neighbourhood<D>& nb, const K& kernel, Real delta_h_c0, CellIndex c,
                      const Particles<D>& P, std::span<const Vec<D>> vel, std::span<Real> drho_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
+    const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
@@ -71,10 +73,10 @@ void continuity_rate(const Neighbourhood<D>& nb, const K& kernel, Real delta_h_c
         const Vec<D> v_i = vel[i];
         const Vec<D> g_i = P.grad_rho[i];
         Real drho = 0;
-        nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) {
+        nb.for_each_pair(adj, i, F, [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real Fij) {
             if (r2 <= 0)
                 return;
-            const Vec<D> gradW = grad_W<D>(kernel, dx, std::sqrt(r2));
+            const Vec<D> gradW = Fij * dx;
             if (P.kind[j] == Kind::wall) {
                 drho += P.mass[j] * v_i.dot(gradW); // fixed wall: v_j = 0
                 return;

@@ -152,6 +152,17 @@ inline double kernel_support_factor(KernelType type) {
     return type == KernelType::quintic ? 3.0 : 2.0;
 }
 
+// The radial factor F(r) = (dW/dr)/r of the pair at squared distance r2, so that
+// grad_i W_ij = F dx with dx = x_i - x_j; 0 for the particle itself. grad_W below is F dx
+// bitwise, so neighbour lists may store F once per step (Neighbourhood::for_each_pair).
+template <class K>
+inline Real grad_factor(const K& kernel, Real r2) {
+    if (r2 <= 0)
+        return 0;
+    const Real r = std::sqrt(r2);
+    return kernel.dW(r) / r;
+}
+
 // Gradient of W with respect to x_i for the pair displacement dx = x_i - x_j at distance r.
 template <int D, class K>
 inline Vec<D> grad_W(const K& kernel, const Vec<D>& dx, Real r) {

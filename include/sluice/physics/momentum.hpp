@@ -36,6 +36,7 @@ void acceleration(const Neighbourhood<D>& nb, const K& kernel, const MomentumPar
     const Real eta2 = Real(0.01) * prm.h * prm.h;
     const Real two_mu = 2 * prm.mu;
     const Real av = prm.alpha * prm.h * prm.c0;
+    const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
@@ -43,11 +44,9 @@ void acceleration(const Neighbourhood<D>& nb, const K& kernel, const MomentumPar
         const Real p_over_rho2_i = P.p[i] / (rho_i * rho_i);
         const Vec<D> v_i = P.v[i];
         Vec<D> acc = Vec<D>::Zero();
-        nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) {
+        nb.for_each_pair(adj, i, F, [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real dWr) {
             if (r2 <= 0)
                 return;
-            const Real r = std::sqrt(r2);
-            const Real dWr = kernel.dW(r) / r;
             const Vec<D> gradW = dWr * dx;
             const Real rho_j = P.rho[j];
             const Real m_j = P.mass[j];
