@@ -120,8 +120,8 @@ struct Neighbourhood {
     // in the particle arrays and given in storage order (a cell group's cells), and with
     // factor(r2) for every pair (see for_each_pair).
     template <class G>
-    void build_list(std::span<const CellIndex> group_cells, NeighbourList<D>& out,
-                    const G& factor) const {
+    SLUICE_FLATTEN void build_list(std::span<const CellIndex> group_cells, NeighbourList<D>& out,
+                                   const G& factor) const {
         out.offset.clear();
         out.j.clear();
         out.shift.clear();

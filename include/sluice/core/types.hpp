@@ -3,6 +3,11 @@
 #include <Eigen/Core>
 #include <cstdint>
 
+// On a per-cell neighbour loop: inline every call inside it (the per-pair lambda included).
+// Without it GCC 12 keeps the pair lambda an out-of-line call, since for_each_pair invokes it
+// from three places, and a call per pair costs a third of a stage (perf/NOTES.md).
+#define SLUICE_FLATTEN [[gnu::flatten]]
+
 namespace sluice {
 
 // Floating-point type of all particle state. Double by default (see docs/ARCHITECTURE.md).

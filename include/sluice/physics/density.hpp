@@ -14,8 +14,8 @@ namespace sluice {
 
 // rho_i = sum_j m_j W_ij over fluid and wall particles, for the fluid particles of cell c.
 template <int D, class K>
-void summation_density(const Neighbourhood<D>& nb, const K& kernel, CellIndex c,
-                       const Particles<D>& P, std::span<Real> rho_out) {
+SLUICE_FLATTEN void summation_density(const Neighbourhood<D>& nb, const K& kernel, CellIndex c,
+                                      const Particles<D>& P, std::span<Real> rho_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
         if (P.kind[i] != Kind::fluid)
@@ -32,8 +32,9 @@ void summation_density(const Neighbourhood<D>& nb, const K& kernel, CellIndex c,
 // L_i = [sum_j V_j grad_i W_ij (x_j - x_i)^T]^{-1}, over fluid neighbours (Antuono 2010,
 // eq. 9). Where L is singular (too few neighbours) the uncorrected sum is used.
 template <int D, class K>
-void renormalised_density_gradient(const Neighbourhood<D>& nb, const K& kernel, CellIndex c,
-                                   const Particles<D>& P, std::span<Vec<D>> grad_out) {
+SLUICE_FLATTEN void renormalised_density_gradient(const Neighbourhood<D>& nb, const K& kernel,
+                                                  CellIndex c, const Particles<D>& P,
+                                                  std::span<Vec<D>> grad_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
@@ -62,8 +63,9 @@ void renormalised_density_gradient(const Neighbourhood<D>& nb, const K& kernel, 
 // `vel` is the velocity the leap-frog advances densities with: v^{n+1/2}, the same that
 // drifts the positions, so density and velocity stay staggered like x and v.
 template <int D, class K>
-void continuity_rate(const Neighbourhood<D>& nb, const K& kernel, Real delta_h_c0, CellIndex c,
-                     const Particles<D>& P, std::span<const Vec<D>> vel, std::span<Real> drho_out) {
+SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel, Real delta_h_c0,
+                                    CellIndex c, const Particles<D>& P, std::span<const Vec<D>> vel,
+                                    std::span<Real> drho_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {

@@ -30,8 +30,9 @@ struct MomentumParams {
 };
 
 template <int D, class K>
-void acceleration(const Neighbourhood<D>& nb, const K& kernel, const MomentumParams<D>& prm,
-                  CellIndex c, const Particles<D>& P, std::span<Vec<D>> a_out) {
+SLUICE_FLATTEN void acceleration(const Neighbourhood<D>& nb, const K& kernel,
+                                 const MomentumParams<D>& prm, CellIndex c, const Particles<D>& P,
+                                 std::span<Vec<D>> a_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     const Real eta2 = Real(0.01) * prm.h * prm.h;
     const Real two_mu = 2 * prm.mu;

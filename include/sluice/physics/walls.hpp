@@ -51,9 +51,9 @@ void reflect(const std::vector<Plane<D>>& planes, Real restitution, Vec<D>& x, V
 // Adami pressure, density, mass (rho_w V_w) and boundary velocity of the wall particles of
 // cell c (fixed walls: a_w = 0, v_w = 0).
 template <int D, class K>
-void dummy_wall_state(const Neighbourhood<D>& nb, const K& kernel, const Eos& eos,
-                      const Vec<D>& gravity, bool no_slip, Real wall_volume, CellIndex c,
-                      Particles<D>& P) {
+SLUICE_FLATTEN void dummy_wall_state(const Neighbourhood<D>& nb, const K& kernel, const Eos& eos,
+                                     const Vec<D>& gravity, bool no_slip, Real wall_volume,
+                                     CellIndex c, Particles<D>& P) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     for (std::uint32_t w = nb.begin(c); w < nb.end(c); ++w) {
         if (P.kind[w] != Kind::wall)
