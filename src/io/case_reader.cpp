@@ -39,8 +39,8 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"particles", {"dx"}},
     {"blocks", {"lo", "hi", "velocity", "profile", "amplitude", "hydrostatic"}},
     {"numerics",
-     {"kernel", "h_over_dx", "density", "delta_sph", "artificial_viscosity", "shifting", "cfl",
-      "viscous_cfl", "force_cfl", "dt"}},
+     {"kernel", "h_over_dx", "density", "delta_sph", "density_diffusion", "artificial_viscosity",
+      "shifting", "cfl", "viscous_cfl", "force_cfl", "dt"}},
     {"walls", {"model", "tank_lo", "tank_hi", "tank_faces", "restitution", "no_slip", "planes"}},
     {"walls.planes", {"point", "normal"}},
     {"time", {"end_time", "output_interval"}},
@@ -526,6 +526,8 @@ const std::vector<std::pair<std::string, KernelType>> kKernels = {
     {"cubic_spline", KernelType::cubic_spline}};
 const std::vector<std::pair<std::string, DensityScheme>> kDensity = {
     {"summation", DensityScheme::summation}, {"continuity", DensityScheme::continuity}};
+const std::vector<std::pair<std::string, DensityDiffusion>> kDiffusion = {
+    {"antuono", DensityDiffusion::antuono}, {"fourtakas", DensityDiffusion::fourtakas}};
 const std::vector<std::pair<std::string, BalanceCost>> kBalanceCost = {
     {"time", BalanceCost::time}, {"particles", BalanceCost::particles}};
 const std::vector<std::pair<std::string, InitialDecomposition>> kInitialDecomposition = {
@@ -677,6 +679,7 @@ void read_numerics(const Section& s, CaseConfig& c) {
     c.density = s.choice("density", DensityScheme::continuity, kDensity);
     c.delta_sph = s.number("delta_sph", 0.1);
     s.require(c.delta_sph >= 0, "delta_sph", fmt::format("must be >= 0, got {}", c.delta_sph));
+    c.density_diffusion = s.choice("density_diffusion", DensityDiffusion::antuono, kDiffusion);
     c.artificial_viscosity = s.number("artificial_viscosity", 0);
     s.require(c.artificial_viscosity >= 0, "artificial_viscosity",
               fmt::format("must be >= 0, got {}", c.artificial_viscosity));

@@ -77,6 +77,9 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts)
     momentum_.h = h_;
     continuity_ = cfg.density == DensityScheme::continuity;
     delta_h_c0_ = continuity_ ? cfg.delta_sph * h_ * cfg.sound_speed : 0.0;
+    diffusion_ = DensityDiffusionParams<D>{delta_h_c0_, cfg.density_diffusion,
+                                           cfg.rho0 * momentum_.gravity, eos_};
+    density_gradient_ = delta_h_c0_ > 0 && cfg.density_diffusion == DensityDiffusion::antuono;
     momentum_.wall_viscous = cfg.no_slip;
     momentum_.p_floor = cfg.background_pressure;
 
@@ -138,8 +141,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts)
                                  : std::max(1, std::min(allowed, tbb::info::default_concurrency()) -
                                                    (comm_.parallel() ? 1 : 0));
     arena_ = std::make_unique<tbb::task_arena>(threads_ + (comm_.parallel() ? 1 : 0), 1);
-    halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_,
-                                            continuity_ && delta_h_c0_ > 0);
+    halo_ =
+        std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_, density_gradient_);
     window_busy_.assign(static_cast<std::size_t>(comm_.size()), 0.0);
 
     distribute_initial_particles();
@@ -511,7 +514,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
         for (CellIndex c : cells) {
             if (cfg_.density == DensityScheme::summation) {
                 summation_density(nb, kernel, c, P_, std::span<Real>(P_.rho));
-            } else if (delta_h_c0_ > 0) {
+            } else if (density_gradient_) {
                 renormalised_density_gradient(nb, kernel, c, P_, std::span<Vec<D>>(P_.grad_rho));
             }
             equation_of_state(nb, eos_, c, P_, std::span<Real>(P_.p));
@@ -545,7 +548,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
         std::string failure;
         for (CellIndex c : cells) {
             if (continuity_)
-                continuity_rate(nb, kernel, delta_h_c0_, c, P_, std::span<const Vec<D>>(P_.v_half),
+                continuity_rate(nb, kernel, diffusion_, c, P_, std::span<const Vec<D>>(P_.v_half),
                                 std::span<Real>(P_.drho));
             for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
                 if (P_.kind[i] != Kind::fluid) {

@@ -25,9 +25,12 @@ struct NeighbourList {
     std::uint32_t first = 0;           // index of the first particle of the range
     std::vector<std::uint32_t> offset; // pairs of particle first + k: [offset[k], offset[k+1])
     std::vector<std::uint32_t> j;      // neighbour index
-    std::vector<Vec<D>> shift;         // periodic image shift added to x_i - x_j (empty when
-                                       // no axis is periodic: every shift is then zero)
+    std::vector<Vec<D>> shift;         // periodic image shift added to x_i - x_j (only when
+                                       // an axis is periodic: every shift is zero otherwise)
     std::vector<Real> factor;          // per pair: the radial factor given to build_list
+    std::size_t pairs = 0;             // pairs found (the arrays may be longer)
+    bool periodic = false;             // whether `shift` holds the image shifts
+    std::vector<AdjacentCells<D>> adjacent; // scratch: adjacent cells of each cell of the range
     [[nodiscard]] bool covers(std::uint32_t i) const {
         return i >= first && i + 1 < first + offset.size();
     }
@@ -56,7 +59,7 @@ struct Neighbourhood {
             const std::uint32_t k = i - list->first;
             const Vec<D> xi = x[i];
             const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
-            if (list->shift.empty()) {
+            if (!list->periodic) {
                 for (std::uint32_t p = b; p < e; ++p) {
                     const std::uint32_t j = list->j[p];
                     const Vec<D> dx = xi - x[j];
@@ -93,11 +96,11 @@ struct Neighbourhood {
     // stage's arithmetic: three stages of a step share one evaluation.
     template <class G, class F>
     void for_each_pair(const AdjacentCells<D>& adj, std::uint32_t i, const G& factor, F&& f) const {
-        if (list != nullptr && !list->factor.empty() && list->covers(i)) {
+        if (list != nullptr && list->covers(i)) {
             const std::uint32_t k = i - list->first;
             const Vec<D> xi = x[i];
             const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
-            if (list->shift.empty()) {
+            if (!list->periodic) {
                 for (std::uint32_t p = b; p < e; ++p) {
                     const std::uint32_t j = list->j[p];
                     const Vec<D> dx = xi - x[j];
@@ -122,34 +125,68 @@ struct Neighbourhood {
     template <class G>
     SLUICE_FLATTEN void build_list(std::span<const CellIndex> group_cells, NeighbourList<D>& out,
                                    const G& factor) const {
-        out.offset.clear();
-        out.j.clear();
-        out.shift.clear();
-        out.factor.clear();
         out.first = group_cells.empty() ? 0 : cells->begin[group_cells.front()];
-        out.offset.push_back(0);
-        const Real support2 = support * support;
+        // Size the buffers for every candidate pair first, so that the scan below writes
+        // without a capacity check per pair; they keep their capacity between steps.
+        out.adjacent.resize(group_cells.size());
+        std::size_t bound = 0, n_particles = 0;
+        for (std::size_t g = 0; g < group_cells.size(); ++g) {
+            const CellIndex c = group_cells[g];
+            out.adjacent[g] = adjacent(c);
+            std::size_t candidates = 0;
+            for (int k = 0; k < out.adjacent[g].count; ++k)
+                candidates += end(out.adjacent[g].cell[k].cell) - begin(out.adjacent[g].cell[k].cell);
+            bound += candidates * (end(c) - begin(c));
+            n_particles += end(c) - begin(c);
+        }
         const bool periodic = grid->any_periodic();
-        for (CellIndex c : group_cells) {
-            const AdjacentCells<D> adj = adjacent(c);
-            for (std::uint32_t i = cells->begin[c]; i < cells->end[c]; ++i) {
+        // Only ever grown: entries past the pairs found are stale and never read.
+        if (out.j.size() < bound) {
+            out.j.resize(bound);
+            out.factor.resize(bound); // holds r2 until the last loop turns it into the factor
+        }
+        if (periodic && out.shift.size() < bound)
+            out.shift.resize(bound);
+        out.offset.resize(n_particles + 1);
+        const Real support2 = support * support;
+        std::uint32_t* js = out.j.data();
+        Real* r2s = out.factor.data();
+        std::size_t n = 0, row = 0;
+        out.offset[0] = 0;
+        for (std::size_t g = 0; g < group_cells.size(); ++g) {
+            const CellIndex c = group_cells[g];
+            const AdjacentCells<D>& adj = out.adjacent[g];
+            for (std::uint32_t i = begin(c); i < end(c); ++i) {
                 const Vec<D> xi = x[i];
                 for (int k = 0; k < adj.count; ++k) {
                     const CellIndex nc = adj.cell[k].cell;
                     const Vec<D> xis = xi + adj.cell[k].shift;
-                    for (std::uint32_t j = cells->begin[nc]; j < cells->end[nc]; ++j) {
-                        const Real r2 = (xis - x[j]).squaredNorm();
-                        if (r2 < support2) {
-                            out.j.push_back(j);
-                            out.factor.push_back(factor(r2));
-                            if (periodic)
-                                out.shift.push_back(adj.cell[k].shift);
+                    const std::uint32_t e = end(nc);
+                    // Branch-free compaction: every candidate is written at n and kept by
+                    // advancing n. About a third are kept, so an `if` mispredicts often.
+                    if (periodic)
+                        for (std::uint32_t j = begin(nc); j < e; ++j) {
+                            const Real r2 = (xis - x[j]).squaredNorm();
+                            out.shift[n] = adj.cell[k].shift;
+                            js[n] = j;
+                            r2s[n] = r2;
+                            n += r2 < support2 ? 1 : 0;
                         }
-                    }
+                    else
+                        for (std::uint32_t j = begin(nc); j < e; ++j) {
+                            const Real r2 = (xis - x[j]).squaredNorm();
+                            js[n] = j;
+                            r2s[n] = r2;
+                            n += r2 < support2 ? 1 : 0;
+                        }
                 }
-                out.offset.push_back(static_cast<std::uint32_t>(out.j.size()));
+                out.offset[++row] = static_cast<std::uint32_t>(n);
             }
         }
+        out.pairs = n;
+        out.periodic = periodic;
+        for (std::size_t p = 0; p < n; ++p)
+            r2s[p] = factor(r2s[p]);
     }
 
     [[nodiscard]] std::uint32_t begin(CellIndex c) const { return cells->begin[c]; }

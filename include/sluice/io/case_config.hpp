@@ -19,6 +19,8 @@ using Triple = std::array<double, 3>;
 
 enum class KernelType { quintic, wendland_c2, cubic_spline };
 enum class DensityScheme { summation, continuity };
+// Form of the delta-SPH density diffusion term (docs/CASE_REFERENCE.md, [numerics]).
+enum class DensityDiffusion { antuono, fourtakas };
 enum class EosType { linear, tait };
 enum class WallModel { none, reflective, dummy };
 enum class VelocityProfile { uniform, taylor_green };
@@ -73,7 +75,8 @@ struct CaseConfig {
     KernelType kernel = KernelType::quintic;
     double h_over_dx = 1.0; // smoothing length h = h_over_dx * dx
     DensityScheme density = DensityScheme::continuity;
-    double delta_sph = 0.1;          // delta-SPH diffusion coefficient (0 = off; continuity only)
+    double delta_sph = 0.1; // delta-SPH diffusion coefficient (0 = off; continuity only)
+    DensityDiffusion density_diffusion = DensityDiffusion::antuono;
     double artificial_viscosity = 0; // Monaghan alpha (0 = off)
     double shifting = 0;        // particle-shifting coefficient A (0 = off; 4 = Sun et al. 2017)
     double cfl = 0.25;          // acoustic CFL number: dt <= cfl*h/(c0 + |v|max)

@@ -56,25 +56,45 @@ SLUICE_FLATTEN void renormalised_density_gradient(const Neighbourhood<D>& nb, co
     }
 }
 
-// Continuity equation with delta-SPH diffusion (Antuono et al. 2010, eq. 8):
+// delta-SPH density diffusion: coefficient and form (case key numerics.density_diffusion).
+template <int D>
+struct DensityDiffusionParams {
+    Real delta_h_c0 = 0; // delta h c0; 0 = no diffusion
+    DensityDiffusion form = DensityDiffusion::antuono;
+    Vec<D> rho0_g = Vec<D>::Zero(); // fourtakas: rho0 times gravity, for the hydrostatic part
+    Eos eos;                        // fourtakas: density of a hydrostatic pressure difference
+};
+
+// Continuity equation with delta-SPH diffusion:
 //   drho_i = sum_j m_j (v_i - v_j) . grad_i W_ij + delta h c0 sum_j psi_ij . grad_i W_ij V_j,
-//   psi_ij = 2 (rho_j - rho_i)(x_j - x_i)/r^2 - (<grad rho>_i + <grad rho>_j),
 // the diffusion over fluid-fluid pairs only (wall densities are extrapolated, not evolved).
+//   antuono   (Antuono et al. 2010, eq. 8):
+//             psi_ij = 2 (rho_j - rho_i)(x_j - x_i)/r^2 - (<grad rho>_i + <grad rho>_j)
+//   fourtakas (Fourtakas et al. 2019, eqs. 10-12):
+//             psi_ij = 2 (rho_j - rho_i - rho^H_ji)(x_j - x_i)/r^2, with rho^H_ji the density
+//             difference of the hydrostatic pressure difference rho0 g.(x_j - x_i) through the
+//             EOS; no gradient pass is needed.
+// With grad_i W_ij = F dx (dx = x_i - x_j), (x_j - x_i)/r^2 . grad_i W_ij = -F exactly, so
+// neither form divides by r^2 per pair.
 // `vel` is the velocity the leap-frog advances densities with: v^{n+1/2}, the same that
 // drifts the positions, so density and velocity stay staggered like x and v.
 template <int D, class K>
-SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel, Real delta_h_c0,
-                                    CellIndex c, const Particles<D>& P, std::span<const Vec<D>> vel,
+SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
+                                    const DensityDiffusionParams<D>& diff, CellIndex c,
+                                    const Particles<D>& P, std::span<const Vec<D>> vel,
                                     std::span<Real> drho_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
+    const bool antuono = diff.delta_h_c0 > 0 && diff.form == DensityDiffusion::antuono;
+    const bool fourtakas = diff.delta_h_c0 > 0 && diff.form == DensityDiffusion::fourtakas;
+    const Real rho0 = diff.eos.rho0, p_b = diff.eos.p_background;
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
         const Real rho_i = P.rho[i];
         const Vec<D> v_i = vel[i];
         const Vec<D> g_i = P.grad_rho[i];
-        Real drho = 0;
+        Real drho = 0, diffusion = 0;
         nb.for_each_pair(adj, i, F, [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real Fij) {
             if (r2 <= 0)
                 return;
@@ -84,12 +104,16 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
                 return;
             }
             drho += P.mass[j] * (v_i - vel[j]).dot(gradW);
-            if (delta_h_c0 > 0) {
-                const Vec<D> psi = (-2 * (P.rho[j] - rho_i) / r2) * dx - (g_i + P.grad_rho[j]);
-                drho += delta_h_c0 * (P.mass[j] / P.rho[j]) * psi.dot(gradW);
+            const Real Vj = P.mass[j] / P.rho[j];
+            if (antuono)
+                diffusion +=
+                    Vj * (-2 * (P.rho[j] - rho_i) * Fij - (g_i + P.grad_rho[j]).dot(gradW));
+            else if (fourtakas) {
+                const Real rho_h = diff.eos.density(p_b - diff.rho0_g.dot(dx)) - rho0;
+                diffusion += Vj * (-2 * (P.rho[j] - rho_i - rho_h) * Fij);
             }
         });
-        drho_out[i] = drho;
+        drho_out[i] = drho + diff.delta_h_c0 * diffusion;
     }
 }
 

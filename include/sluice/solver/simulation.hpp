@@ -6,6 +6,7 @@
 #include "sluice/core/particles.hpp"
 #include "sluice/core/rebin.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/physics/density.hpp"
 #include "sluice/physics/eos.hpp"
 #include "sluice/physics/kernels.hpp"
 #include "sluice/physics/momentum.hpp"
@@ -135,6 +136,8 @@ private:
     double h_ = 0;
     bool continuity_ = false;
     double delta_h_c0_ = 0; // delta-SPH coefficient times h c0
+    DensityDiffusionParams<D> diffusion_;
+    bool density_gradient_ = false; // the density stage computes the renormalised gradient
 
     tasks::GroupTopology topo_;
     std::unique_ptr<tasks::StepGraph> graph_;
