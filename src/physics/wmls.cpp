@@ -17,19 +17,6 @@ namespace {
 using MatX = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
 using VecX = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
 
-template <int D>
-void fill_design_row(const Vec<D>& offset, Real inv_re, Real sqrt_w, MatX& B, Eigen::Index row) {
-    const Vec<D> s = offset * inv_re;
-    int c = 0;
-    for (int a = 0; a < D; ++a)
-        B(row, c++) = sqrt_w * s[a];
-    for (int a = 0; a < D; ++a)
-        B(row, c++) = sqrt_w * Real(0.5) * s[a] * s[a];
-    for (int a = 0; a < D; ++a)
-        for (int b = a + 1; b < D; ++b)
-            B(row, c++) = sqrt_w * s[a] * s[b];
-}
-
 // Columns: the D gradient components and the Laplacian, as functionals on the scaled
 // unknowns a~ (the 1/re and 1/re^2 of the unscaling are applied to the coefficients later).
 template <int D>
@@ -62,6 +49,26 @@ bool estimable(const Eigen::JacobiSVD<MatX>& svd, Eigen::Index r, const VecX& g)
 } // namespace
 
 template <int D>
+MatX wmls_design_matrix(std::span<const Vec<D>> offsets, Real re, LsWeight weight) {
+    const auto N = static_cast<Eigen::Index>(offsets.size());
+    MatX B(N, wmls_unknowns<D>);
+    for (Eigen::Index j = 0; j < N; ++j) {
+        const Vec<D>& d = offsets[static_cast<std::size_t>(j)];
+        const Real sqrt_w = std::sqrt(ls_weight(d.norm(), re, weight));
+        const Vec<D> s = d / re;
+        int c = 0;
+        for (int a = 0; a < D; ++a)
+            B(j, c++) = sqrt_w * s[a];
+        for (int a = 0; a < D; ++a)
+            B(j, c++) = sqrt_w * Real(0.5) * s[a] * s[a];
+        for (int a = 0; a < D; ++a)
+            for (int b = a + 1; b < D; ++b)
+                B(j, c++) = sqrt_w * s[a] * s[b];
+    }
+    return B;
+}
+
+template <int D>
 WmlsStencil<D> wmls_stencil(std::span<const Vec<D>> offsets, Real re, LsWeight weight) {
     constexpr int M = wmls_unknowns<D>;
     const auto N = static_cast<Eigen::Index>(offsets.size());
@@ -73,12 +80,9 @@ WmlsStencil<D> wmls_stencil(std::span<const Vec<D>> offsets, Real re, LsWeight w
 
     const Real inv_re = 1 / re;
     VecX sqrt_w(N);
-    MatX B(N, M);
-    for (Eigen::Index j = 0; j < N; ++j) {
-        const Vec<D>& d = offsets[static_cast<std::size_t>(j)];
-        sqrt_w[j] = std::sqrt(ls_weight(d.norm(), re, weight));
-        fill_design_row<D>(d, inv_re, sqrt_w[j], B, j);
-    }
+    for (Eigen::Index j = 0; j < N; ++j)
+        sqrt_w[j] = std::sqrt(ls_weight(offsets[static_cast<std::size_t>(j)].norm(), re, weight));
+    const MatX B = wmls_design_matrix<D>(offsets, re, weight);
     const MatX G = target_functionals<D>();
     MatX C(N, D + 1); // coefficients of the scaled functionals, before sqrt(w) and unscaling
 
@@ -151,6 +155,8 @@ DiffResult<D> wmls_derivatives(std::span<const Vec<D>> offsets, std::span<const 
     return apply_stencil<D>(wmls_stencil<D>(offsets, re, weight), differences);
 }
 
+template MatX wmls_design_matrix<2>(std::span<const Vec<2>>, Real, LsWeight);
+template MatX wmls_design_matrix<3>(std::span<const Vec<3>>, Real, LsWeight);
 template WmlsStencil<2> wmls_stencil<2>(std::span<const Vec<2>>, Real, LsWeight);
 template WmlsStencil<3> wmls_stencil<3>(std::span<const Vec<3>>, Real, LsWeight);
 template DiffResult<2> apply_stencil<2>(const WmlsStencil<2>&, std::span<const Real>);

@@ -33,6 +33,13 @@ inline constexpr int wmls_unknowns = D + D*(D + 1) / 2;
 // fitted second derivatives amplify the Taylor remainder by more than 1000.
 inline constexpr Real wmls_rank_tolerance = 1e-3;
 
+// Scaled weighted design matrix B (N x wmls_unknowns<D>) of the fit, row j:
+//   sqrt(w_j) (s, s_a^2 / 2, s_a s_b (a < b)),  s = (x_j - x_i) / re,
+// unknowns (re f_a, re^2 f_aa, re^2 f_ab) in that order (docs/WMLS.md, eq. W5).
+template <int D>
+Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>
+wmls_design_matrix(std::span<const Vec<D>> offsets, Real re, LsWeight weight);
+
 // Per-neighbour coefficients of the operators at one particle (columns follow `offsets`).
 template <int D>
 struct WmlsStencil {
@@ -55,6 +62,10 @@ template <int D>
 DiffResult<D> wmls_derivatives(std::span<const Vec<D>> offsets, std::span<const Real> differences,
                                Real re, LsWeight weight);
 
+extern template Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>
+    wmls_design_matrix<2>(std::span<const Vec<2>>, Real, LsWeight);
+extern template Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>
+    wmls_design_matrix<3>(std::span<const Vec<3>>, Real, LsWeight);
 extern template WmlsStencil<2> wmls_stencil<2>(std::span<const Vec<2>>, Real, LsWeight);
 extern template WmlsStencil<3> wmls_stencil<3>(std::span<const Vec<3>>, Real, LsWeight);
 extern template DiffResult<2> apply_stencil<2>(const WmlsStencil<2>&, std::span<const Real>);
