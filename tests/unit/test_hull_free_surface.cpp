@@ -2,6 +2,7 @@
 // a square lattice block (its outer ring), a block with a square hole (outer ring plus the
 // particles facing the hole), a cubic block in 3-D (its outer shell). Neighbours are those
 // within 2.1 dx (second shell), the usual candidate set.
+#include "sluice/physics/free_surface.hpp"
 #include "sluice/physics/hull_free_surface.hpp"
 
 #include <doctest/doctest.h>
@@ -17,7 +18,10 @@ namespace {
 
 using Site = std::pair<int, int>;
 
-std::set<Site> surface_2d(const std::set<Site>& sites, double dx, double radius_over_dx) {
+// Surface particles by the hull test, or (arc = true) by Dilts' arc method with circles of
+// diameter radius_over_dx * dx (seed 004: 2.1 l0), on the same neighbours.
+std::set<Site> surface_2d(const std::set<Site>& sites, double dx, double radius_over_dx,
+                          bool arc = false) {
     std::set<Site> surface;
     for (const auto& [i, j] : sites) {
         std::vector<Vec<2>> r;
@@ -26,7 +30,8 @@ std::set<Site> surface_2d(const std::set<Site>& sites, double dx, double radius_
             if ((k != i || l != j) && o.norm() <= radius_over_dx * dx)
                 r.push_back(o);
         }
-        if (is_surface_particle_by_hull<2>(r))
+        if (arc ? physics::is_free_surface<2>(r, radius_over_dx * dx)
+                : is_surface_particle_by_hull<2>(r))
             surface.insert({i, j});
     }
     return surface;
@@ -63,6 +68,7 @@ TEST_CASE("square lattice block: the surface is the outer ring") {
     CHECK(ring.size() == 4 * n - 4);
     CHECK(surface_2d(sites, dx, 2.1) == ring);
     CHECK(surface_2d(sites, dx, 1.5) == ring); // first shell only: same answer
+    CHECK(surface_2d(sites, dx, 2.1, true) == ring); // the arc method agrees
 }
 
 TEST_CASE("lattice with a square hole: outer ring and the particles facing the hole") {
@@ -92,6 +98,14 @@ TEST_CASE("lattice with a square hole: outer ring and the particles facing the h
     CHECK(expected.size() == 4 * n - 4 + 12);
     const auto found = surface_2d(sites, dx, 2.1);
     CHECK(found == expected);
+    // Dilts' arc method (circle diameter 2.1 dx) also flags the 8 particles at the ends of the
+    // hole's sides: their one diagonal neighbour across the corner does not cover the arc
+    // facing the hole. Everything the hull calls surface, the arc method does too.
+    const auto arc = surface_2d(sites, dx, 2.1, true);
+    for (const auto& s : found)
+        CHECK(arc.count(s) == 1);
+    CHECK(arc.size() == found.size() + 8);
+    MESSAGE("hole: hull " << found.size() << " surface particles, arc method " << arc.size());
     // The angular-gap criterion (no hull involved) agrees particle by particle.
     for (const auto& [i, j] : sites) {
         std::vector<Vec<2>> r;
