@@ -67,7 +67,7 @@ TEST_CASE("square lattice block: the surface is the outer ring") {
             ring.insert({i, j});
     CHECK(ring.size() == 4 * n - 4);
     CHECK(surface_2d(sites, dx, 2.1) == ring);
-    CHECK(surface_2d(sites, dx, 1.5) == ring); // first shell only: same answer
+    CHECK(surface_2d(sites, dx, 1.5) == ring);       // first shell only: same answer
     CHECK(surface_2d(sites, dx, 2.1, true) == ring); // the arc method agrees
 }
 
