@@ -31,7 +31,7 @@ namespace {
 const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"",
      {"case", "domain", "fluid", "particles", "blocks", "numerics", "walls", "time", "output",
-      "probes", "runtime"}},
+      "probes", "runtime", "neighbours"}},
     {"case", {"name", "description", "dimension"}},
     {"domain", {"lo", "hi", "periodic"}},
     {"fluid",
@@ -46,6 +46,13 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"time", {"end_time", "output_interval"}},
     {"output", {"snapshots", "fields"}},
     {"probes", {"name", "type", "position", "x", "interval"}},
+    {"neighbours", {"gradient", "laplacian", "free_surface"}},
+    {"neighbours.gradient",
+     {"selection", "candidate_radius_over_dx", "union_with_radius", "hull_points"}},
+    {"neighbours.laplacian",
+     {"selection", "candidate_radius_over_dx", "union_with_radius", "hull_points"}},
+    {"neighbours.free_surface",
+     {"selection", "candidate_radius_over_dx", "union_with_radius", "hull_points"}},
     {"runtime",
      {"particles_per_group", "rebalance_threshold", "rebalance_window", "rebalance_every",
       "balance_cost", "initial_decomposition"}},
@@ -532,6 +539,10 @@ const std::vector<std::pair<std::string, BalanceCost>> kBalanceCost = {
     {"time", BalanceCost::time}, {"particles", BalanceCost::particles}};
 const std::vector<std::pair<std::string, InitialDecomposition>> kInitialDecomposition = {
     {"balanced", InitialDecomposition::balanced}, {"key-range", InitialDecomposition::key_range}};
+const std::vector<std::pair<std::string, NeighbourPolicy>> kNeighbourPolicies = {
+    {"radius", NeighbourPolicy::radius}, {"convex-hull", NeighbourPolicy::convex_hull}};
+const std::vector<std::pair<std::string, bool>> kHullPoints = {{"vertices", false},
+                                                               {"boundary", true}};
 const std::vector<std::pair<std::string, EosType>> kEos = {{"linear", EosType::linear},
                                                            {"tait", EosType::tait}};
 const std::vector<std::pair<std::string, WallModel>> kWalls = {
@@ -892,6 +903,33 @@ void read_runtime(const Section& s, CaseConfig& c) {
         s.choice("initial_decomposition", InitialDecomposition::balanced, kInitialDecomposition);
 }
 
+// One operator's [neighbours.<operator>] table. The convex-hull keys are refused with the
+// radius policy, where they would silently do nothing.
+NeighbourSelection read_neighbour_selection(const Section& s) {
+    NeighbourSelection n;
+    n.policy = s.choice("selection", NeighbourPolicy::radius, kNeighbourPolicies);
+    if (n.policy == NeighbourPolicy::radius) {
+        for (const char* k : {"candidate_radius_over_dx", "union_with_radius", "hull_points"})
+            s.require(s.node(k) == nullptr, k,
+                      "applies only to selection = \"convex-hull\" (selection is \"radius\")");
+        return n;
+    }
+    n.candidate_radius_over_dx = s.number("candidate_radius_over_dx", 3.1);
+    s.require(
+        n.candidate_radius_over_dx > 0 && n.candidate_radius_over_dx <= 10,
+        "candidate_radius_over_dx",
+        fmt::format("must be in (0, 10] (lattice spacings), got {}", n.candidate_radius_over_dx));
+    n.union_with_radius = s.boolean("union_with_radius").value_or(false);
+    n.hull_boundary = s.choice("hull_points", true, kHullPoints);
+    return n;
+}
+
+void read_neighbours(const Section& s, CaseConfig& c) {
+    c.neighbours.gradient = read_neighbour_selection(s.sub("gradient"));
+    c.neighbours.laplacian = read_neighbour_selection(s.sub("laplacian"));
+    c.neighbours.free_surface = read_neighbour_selection(s.sub("free_surface"));
+}
+
 // Lattice sites of all blocks; refuses cases that would not fit any sensible machine.
 void check_particle_count(const Section& root, const CaseConfig& c) {
     double total = 0;
@@ -933,6 +971,7 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
     read_output(top.sub("output"), c);
     read_probes(top, c);
     read_runtime(top.sub("runtime"), c);
+    read_neighbours(top.sub("neighbours"), c);
     check_particle_count(top, c);
     return c;
 }

@@ -397,3 +397,55 @@ TEST_CASE("overrides") {
     fails("time.end_time=-1", "time.end_time");
     fails("time.end_time=soon", "time.end_time");
 }
+
+TEST_CASE("neighbour selection per operator: default radius, convex-hull keys validated") {
+    const std::string path = write_case("nb_default", kValid2D);
+    const CaseConfig d = read_case(path);
+    CHECK(d.neighbours.gradient.policy == NeighbourPolicy::radius);
+    CHECK(d.neighbours.laplacian.policy == NeighbourPolicy::radius);
+    CHECK(d.neighbours.free_surface.policy == NeighbourPolicy::radius);
+
+    const std::string hull = kValid2D + R"(
+[neighbours.gradient]
+selection = "convex-hull"
+candidate_radius_over_dx = 2.5
+union_with_radius = true
+hull_points = "vertices"
+
+[neighbours.free_surface]
+selection = "convex-hull"
+)";
+    const CaseConfig c = read_case(write_case("nb_hull", hull));
+    CHECK(c.neighbours.gradient.policy == NeighbourPolicy::convex_hull);
+    CHECK(c.neighbours.gradient.candidate_radius_over_dx == 2.5);
+    CHECK(c.neighbours.gradient.union_with_radius);
+    CHECK_FALSE(c.neighbours.gradient.hull_boundary);
+    CHECK(c.neighbours.laplacian.policy == NeighbourPolicy::radius);
+    CHECK(c.neighbours.free_surface.policy == NeighbourPolicy::convex_hull);
+    CHECK(c.neighbours.free_surface.candidate_radius_over_dx == 3.1);
+    CHECK_FALSE(c.neighbours.free_surface.union_with_radius);
+    CHECK(c.neighbours.free_surface.hull_boundary);
+
+    const CaseConfig o = read_case(path, {"neighbours.laplacian.selection=convex-hull",
+                                          "neighbours.laplacian.candidate_radius_over_dx=4"});
+    CHECK(o.neighbours.laplacian.policy == NeighbourPolicy::convex_hull);
+    CHECK(o.neighbours.laplacian.candidate_radius_over_dx == 4);
+
+    const auto bad = [&](const std::string& table, const std::string& key) {
+        return expect_error(kValid2D + "\n[neighbours.gradient]\n" + table, key);
+    };
+    CHECK(contains(bad("selection = \"nearest\"", "neighbours.gradient.selection"), "convex-hull"));
+    CHECK(contains(bad("selection = \"radius\"\nunion_with_radius = true",
+                       "neighbours.gradient.union_with_radius"),
+                   "applies only"));
+    bad("selection = \"convex-hull\"\ncandidate_radius_over_dx = 0",
+        "neighbours.gradient.candidate_radius_over_dx");
+    bad("selection = \"convex-hull\"\ncandidate_radius_over_dx = 11",
+        "neighbours.gradient.candidate_radius_over_dx");
+    bad("selection = \"convex-hull\"\nhull_points = \"edges\"", "neighbours.gradient.hull_points");
+    bad("selection = \"convex-hull\"\nunion_with_radius = 1",
+        "neighbours.gradient.union_with_radius");
+    bad("selection = \"convex-hull\"\nradius = 2", "neighbours.gradient.radius");
+    expect_error(kValid2D + "\n[neighbours.divergence]\nselection = \"radius\"\n",
+                 "neighbours.divergence");
+}

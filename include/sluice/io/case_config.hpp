@@ -48,6 +48,23 @@ struct ProbeConfig {
     double interval = 0; // [s] sampling interval; 0 = every output interval
 };
 
+// Which neighbours an operator uses (issue 5; Randles & Libersky 2000 as in seed 003).
+enum class NeighbourPolicy {
+    radius,     // every particle within the operator's support
+    convex_hull // the hull vertices of the inverse-square images of the candidates
+};
+struct NeighbourSelection {
+    NeighbourPolicy policy = NeighbourPolicy::radius;
+    double candidate_radius_over_dx = 3.1; // convex-hull: candidates within this many dx
+    bool union_with_radius = false;        // convex-hull: also every particle within the support
+    bool hull_boundary = true; // convex-hull: keep points on hull edges/faces, not only corners
+};
+// Per operator; read by operators that take a neighbour set (WMLS gradient and Laplacian,
+// free-surface detection). The WCSPH kernel sums always use the radius set.
+struct OperatorNeighbours {
+    NeighbourSelection gradient, laplacian, free_surface;
+};
+
 struct CaseConfig {
     std::string source_file; // path of the TOML file (for messages)
     std::string name;        // case name; default: file stem
@@ -102,6 +119,9 @@ struct CaseConfig {
 
     // [[probes]]
     std::vector<ProbeConfig> probes;
+
+    // [neighbours.<operator>]
+    OperatorNeighbours neighbours;
 
     // [runtime]
     int particles_per_group = 2000; // target cost of one cell group, in particles

@@ -1,0 +1,29 @@
+#pragma once
+// Exact sign of the 2-D orientation determinant, the one predicate every hull decision rests on.
+//
+//   orient(a, b, c) = (b - a) x (c - a) = (bx - ax)(cy - ay) - (by - ay)(cx - ax)
+//
+// > 0: a, b, c turn counter-clockwise; < 0: clockwise; 0: collinear. This is the cross product
+// P of Lee & Lee (2011, Sklansky's rule) with the sign convention of Shewchuk (1997).
+//
+// How exactness is obtained: the determinant expands into six products of input coordinates
+// (ax by - ax cy - ay bx + ay cx + bx cy - by cx). Each product is split exactly into two
+// doubles with a fused multiply-add (p = a*b, e = fma(a, b, -p), a*b = p + e exactly), and the
+// twelve doubles are summed without any rounding into a non-overlapping expansion with
+// Knuth's two-sum (Shewchuk's Grow-Expansion); the sign of an expansion is the sign of its
+// largest component. A cheap floating-point evaluation with Shewchuk's forward error bound
+// answers first and the exact path runs only when that bound cannot decide.
+// The result is exact for all finite inputs unless a product of two coordinates overflows
+// or underflows into the subnormal range (|product| below about 1e-292 but not 0), which
+// cannot happen for particle offsets and their inverse-square images.
+#include "sluice/core/types.hpp"
+
+namespace sluice {
+
+// -1, 0 or +1: exact sign of orient(a, b, c).
+[[nodiscard]] int orientation_sign(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c);
+
+// The same decided by the exact expansion alone (no floating-point filter); for tests.
+[[nodiscard]] int orientation_sign_expansion(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c);
+
+} // namespace sluice

@@ -1,0 +1,78 @@
+#pragma once
+// Weighted moving least squares (WMLS) gradient and Laplacian of seed 004 (Park et al. 2014,
+// section 2.2; their eqs. 3-11 are missing from the text and re-derived in docs/WMLS.md).
+// f_j - f_i is fitted by the second-order Taylor polynomial of f about x_i over the
+// neighbours j, weighted by w(|x_j - x_i|); the fitted first derivatives are the gradient and
+// the sum of the fitted pure second derivatives the Laplacian. 5 unknowns in 2-D, 9 in 3-D.
+//
+// The fit is linear in the data, so it is computed once per particle as coefficients c_j with
+//   grad f_i = sum_j c^grad_j (f_j - f_i),   lap f_i = sum_j c^lap_j (f_j - f_i)
+// (`wmls_stencil`), which a Poisson solver can reuse for every iterate; `wmls_derivatives`
+// applies them to one field.
+//
+// Solver: column-pivoted Householder QR of the weighted design matrix with columns scaled by
+// powers of re (rank revealing; never forms the normal equations, whose condition number is
+// the square of the design matrix's). Stencils whose numerical rank is below the number of
+// unknowns fall back to a truncated SVD (docs/WMLS.md, "Degenerate stencils"); the result is
+// always finite.
+#include "sluice/core/types.hpp"
+#include "sluice/physics/diff_result.hpp"
+#include "sluice/physics/ls_weight.hpp"
+
+#include <span>
+
+namespace sluice::physics {
+
+// Number of Taylor coefficients fitted: D first and D (D + 1) / 2 second derivatives.
+template <int D>
+inline constexpr int wmls_unknowns = D + D*(D + 1) / 2;
+
+// A pivot (QR) or singular value (SVD) of the scaled weighted design matrix at or below this
+// fraction of the largest counts as zero. The scaled matrix of a full, irregular stencil has
+// a ratio of order 1e-1 (perf/wmls/README.md gives the measured minimum); below 1e-3 the
+// fitted second derivatives amplify the Taylor remainder by more than 1000.
+inline constexpr Real wmls_rank_tolerance = 1e-3;
+
+// Scaled weighted design matrix B (N x wmls_unknowns<D>) of the fit, row j:
+//   sqrt(w_j) (s, s_a^2 / 2, s_a s_b (a < b)),  s = (x_j - x_i) / re,
+// unknowns (re f_a, re^2 f_aa, re^2 f_ab) in that order (docs/WMLS.md, eq. W5).
+template <int D>
+Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>
+wmls_design_matrix(std::span<const Vec<D>> offsets, Real re, LsWeight weight);
+
+// Per-neighbour coefficients of the operators at one particle (columns follow `offsets`).
+template <int D>
+struct WmlsStencil {
+    Eigen::Matrix<Real, D, Eigen::Dynamic> gradient;
+    Eigen::Matrix<Real, 1, Eigen::Dynamic> laplacian;
+    bool ok = false; // both operators exact for every quadratic polynomial on this stencil
+    int rank = 0;    // numerical rank of the second-order design matrix
+};
+
+// offsets: x_j - x_i of the neighbours; re: influence radius (neighbours at r >= re get
+// weight 0 and coefficient 0).
+template <int D>
+WmlsStencil<D> wmls_stencil(std::span<const Vec<D>> offsets, Real re, LsWeight weight);
+
+// differences: f_j - f_i, in the order of the stencil's offsets.
+template <int D>
+DiffResult<D> apply_stencil(const WmlsStencil<D>& stencil, std::span<const Real> differences);
+
+template <int D>
+DiffResult<D> wmls_derivatives(std::span<const Vec<D>> offsets, std::span<const Real> differences,
+                               Real re, LsWeight weight);
+
+extern template Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>
+    wmls_design_matrix<2>(std::span<const Vec<2>>, Real, LsWeight);
+extern template Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>
+    wmls_design_matrix<3>(std::span<const Vec<3>>, Real, LsWeight);
+extern template WmlsStencil<2> wmls_stencil<2>(std::span<const Vec<2>>, Real, LsWeight);
+extern template WmlsStencil<3> wmls_stencil<3>(std::span<const Vec<3>>, Real, LsWeight);
+extern template DiffResult<2> apply_stencil<2>(const WmlsStencil<2>&, std::span<const Real>);
+extern template DiffResult<3> apply_stencil<3>(const WmlsStencil<3>&, std::span<const Real>);
+extern template DiffResult<2> wmls_derivatives<2>(std::span<const Vec<2>>, std::span<const Real>,
+                                                  Real, LsWeight);
+extern template DiffResult<3> wmls_derivatives<3>(std::span<const Vec<3>>, std::span<const Real>,
+                                                  Real, LsWeight);
+
+} // namespace sluice::physics

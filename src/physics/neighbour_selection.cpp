@@ -1,0 +1,49 @@
+// Neighbour-selection policies; see include/sluice/physics/neighbour_selection.hpp.
+#include "sluice/physics/neighbour_selection.hpp"
+
+#include "sluice/physics/mapped_hull.hpp"
+
+#include <algorithm>
+
+namespace sluice {
+
+template <int D>
+std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support, Real dx,
+                                   const NeighbourSelection& selection) {
+    std::vector<int> out;
+    const auto add_radius_set = [&] {
+        const Real s2 = support * support;
+        for (std::size_t j = 0; j < offsets.size(); ++j)
+            if (offsets[j].squaredNorm() < s2)
+                out.push_back(static_cast<int>(j));
+    };
+    if (selection.policy == NeighbourPolicy::radius) {
+        add_radius_set();
+        return out;
+    }
+    const Real rc = selection.candidate_radius_over_dx * dx;
+    std::vector<int> candidate;
+    std::vector<Vec<D>> r;
+    for (std::size_t j = 0; j < offsets.size(); ++j) {
+        const Real r2 = offsets[j].squaredNorm();
+        if (r2 > 0 && r2 <= rc * rc) {
+            candidate.push_back(static_cast<int>(j));
+            r.push_back(offsets[j]);
+        }
+    }
+    const MappedHull<D> hull = mapped_hull<D>(r);
+    for (int k : selection.hull_boundary ? hull.boundary : hull.vertices)
+        out.push_back(candidate[static_cast<std::size_t>(k)]);
+    if (selection.union_with_radius)
+        add_radius_set();
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+template std::vector<int> select_neighbours<2>(std::span<const Vec<2>>, Real, Real,
+                                               const NeighbourSelection&);
+template std::vector<int> select_neighbours<3>(std::span<const Vec<3>>, Real, Real,
+                                               const NeighbourSelection&);
+
+} // namespace sluice
