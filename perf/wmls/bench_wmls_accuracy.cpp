@@ -1,7 +1,7 @@
 // Seed 004's operator benchmark as a table (WMLS vs MPS vs SPH), orders of convergence on
 // random particles, conditioning of the WMLS fit and the cost per particle. Shares the set-up
 // and the error norm with tests/validation/test_wmls_benchmark.cpp (operator_accuracy.hpp).
-// Usage: wmls_operator_accuracy [--seeds N]     (perf/wmls/README.md)
+// Usage: bench_wmls_accuracy [--seeds N]     (perf/wmls/README.md)
 #include "operator_accuracy.hpp"
 #include "sluice/physics/free_surface.hpp"
 
