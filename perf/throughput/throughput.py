@@ -2,7 +2,7 @@
 """Throughput of sluice on the fixed configurations of issue 6, and time per step against N.
 
     perf/throughput/run.sh [--threads 2] [--configs 1,2,3-200k,3-1m] [--short] [--scaling]
-                           [--scaling-only] [--full] [--out DIR] [--nice N]
+                           [--scaling-only] [--full] [--accuracy] [--out DIR] [--nice N]
 
 For every configuration (a case file under perf/cases/) it runs `sluice run` once with I/O
 off and prints: wall time of the time loop, particle-steps per second (whole steps; counting
@@ -10,7 +10,8 @@ wall particles and fluid only), the same per core, the busy time of each stage w
 neighbour interactions it achieved per busy second, the time spent between steps (rebin,
 re-decomposition), and the peak resident memory per particle. --scaling runs the 2-D peer
 case at 10^4 ... 10^6 fluid particles for a fixed number of steps and fits time per step
-(and peak memory) against N. Results: OUT/throughput.csv, OUT/scaling.csv, OUT/report.md,
+(and peak memory) against N. --accuracy also runs the validation dam break and hydrostatic
+tank with configuration 1's numerics and prints their errors beside the speed. Results: OUT/throughput.csv, OUT/scaling.csv, OUT/report.md,
 and each run's folder (summary.json).
 """
 from __future__ import annotations
@@ -22,6 +23,8 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "lib"))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "speed_vs_error"))
+import evaluate  # noqa: E402
 import sluice_run as sr  # noqa: E402
 
 CASES = sr.ROOT / "perf" / "cases"
@@ -47,6 +50,52 @@ STAGE_PAIRS = {
     "accel": ("fluid_fluid", "fluid_wall"),
     "drift": ("fluid_fluid", "fluid_wall"),
 }
+
+
+# Accuracy at the benchmark settings: the validation cases (cases/dam_break_2d.toml, the
+# Martin & Moyce n^2 = 2 column, and cases/hydrostatic_2d.toml) run with configuration 1's
+# numerics (kernel, h, CFL, alpha, delta, EOS, no laminar viscosity; c0 = 20 sqrt(g H) for
+# their own water depth H), errors as in tests/validation/ (perf/speed_vs_error/evaluate.py),
+# compared with the validation thresholds.
+PEER_NUMERICS = {"numerics.kernel": "wendland_c2", "numerics.h_over_dx": math.sqrt(2.0),
+                 "numerics.cfl": 0.2, "numerics.artificial_viscosity": 0.02,
+                 "numerics.delta_sph": 0.1, "numerics.density": "continuity",
+                 "fluid.eos": "tait", "fluid.viscosity": 0.0, "output.snapshots": False}
+ACCURACY = [
+    ("dam_break", "cases/dam_break_2d.toml",
+     {"fluid.sound_speed": 20 * math.sqrt(9.81 * 0.8), "time.end_time": 0.45,
+      "probes.1.interval": 0.005},
+     "front RMS deviation from Martin & Moyce", 0.15,
+     "test_dam_break_2d guard 15 % (issue target 10 %)"),
+    ("hydrostatic", "cases/hydrostatic_2d.toml", {"fluid.sound_speed": 20 * math.sqrt(9.81 * 0.4)},
+     "worst bottom-pressure error after 1 s", 0.02, "test_hydrostatic_2d threshold 2 %"),
+]
+
+
+def accuracy(args, sluice: Path, out: Path) -> list[dict]:
+    print("\n== accuracy at the benchmark settings (configuration 1's numerics)")
+    rows = []
+    for name, rel, extra, what, limit, source in ACCURACY:
+        case = sr.ROOT / rel
+        overrides = {**PEER_NUMERICS, **extra}
+        if args.short:
+            overrides["time.end_time"] = 0.05
+        run = sr.run_sluice(sluice, case, out / f"accuracy_{name}", args.threads, overrides,
+                            nice=args.nice)
+        if not run.ok:
+            print(f"   {name}: FAILED (exit {run.returncode})\n{run.stderr_tail}")
+            rows.append({"case": name, "error": float("nan"), "status": "failed"})
+            continue
+        if args.short:
+            print(f"   {name}: ran (--short: too short for an error figure)")
+            continue
+        err = evaluate.EVALUATORS[name][0](run.out_dir, sr.read_case(case, overrides))
+        verdict = "within" if err < limit else "OUTSIDE"
+        print(f"   {name}: {what} = {100 * err:.2f} % ({verdict} {source}); "
+              f"{run.summary['steps']} steps, wall {run.summary['wall_seconds']:.1f} s")
+        rows.append({"case": name, "error": err, "limit": limit, "status": verdict,
+                     "wall_s": run.summary["wall_seconds"], "steps": run.summary["steps"]})
+    return rows
 
 
 def mean_census(summary: dict) -> dict:
@@ -191,6 +240,8 @@ def main() -> int:
                     help="a few steps per configuration (checks the harness in minutes)")
     ap.add_argument("--full", action="store_true",
                     help="configuration 3 runs its file's full 0.2 s instead of a window")
+    ap.add_argument("--accuracy", action="store_true",
+                    help="also print the front and hydrostatic errors at the benchmark settings")
     ap.add_argument("--scaling", action="store_true", help="also run the scaling-in-N sweep")
     ap.add_argument("--scaling-only", action="store_true", help="only the scaling-in-N sweep")
     ap.add_argument("--scaling-steps", type=int, default=20,
@@ -244,6 +295,10 @@ def main() -> int:
             w.writeheader()
             w.writerows(rows)
         print(f"\n   table: {out / 'throughput.csv'}")
+    if args.accuracy:
+        acc = accuracy(args, sluice, out)
+        if any(r["status"] == "failed" for r in acc):
+            failed.append("accuracy")
     if args.scaling or args.scaling_only:
         scaling(args, sluice, out)
         print(f"   table: {out / 'scaling.csv'}")
