@@ -164,7 +164,7 @@ def print_config(name: str, label: str, d: dict) -> None:
 
 THROUGHPUT_COLUMNS = [
     "config", "case", "threads", "fluid", "walls", "particles", "steps", "simulated_s", "wall_s",
-    "psteps_per_s", "fluid_psteps_per_s", "psteps_per_s_core", "fluid_psteps_per_s_core",
+    "process_wall_s", "cpu_s", "psteps_per_s", "fluid_psteps_per_s", "psteps_per_s_core", "fluid_psteps_per_s_core",
     "time_per_step_s", "density_busy_s", "walls_busy_s", "accel_busy_s", "kick_busy_s",
     "drift_busy_s", "rebin_s", "density_pairs_per_busy_s", "walls_pairs_per_busy_s",
     "accel_pairs_per_busy_s", "drift_pairs_per_busy_s", "neighbours_per_fluid",
