@@ -41,8 +41,10 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"numerics",
      {"kernel", "h_over_dx", "density", "delta_sph", "density_diffusion", "artificial_viscosity",
       "shifting", "cfl", "viscous_cfl", "force_cfl", "dt"}},
-    {"walls", {"model", "tank_lo", "tank_hi", "tank_faces", "restitution", "no_slip", "planes"}},
+    {"walls",
+     {"model", "tank_lo", "tank_hi", "tank_faces", "restitution", "no_slip", "planes", "boxes"}},
     {"walls.planes", {"point", "normal"}},
+    {"walls.boxes", {"lo", "hi"}},
     {"time", {"end_time", "output_interval"}},
     {"output", {"snapshots", "fields"}},
     {"probes", {"name", "type", "position", "x", "interval"}},
@@ -57,7 +59,8 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
      {"particles_per_group", "rebalance_threshold", "rebalance_window", "rebalance_every",
       "balance_cost", "initial_decomposition"}},
 };
-const std::set<std::string, std::less<>> kArrayTables = {"blocks", "probes", "walls.planes"};
+const std::set<std::string, std::less<>> kArrayTables = {"blocks", "probes", "walls.planes",
+                                                         "walls.boxes"};
 
 const std::vector<std::string> kFieldNames = {"position",     "velocity", "density", "pressure",
                                               "acceleration", "mass",     "id",      "kind"};
@@ -627,6 +630,15 @@ void read_fluid(const Section& s, CaseConfig& c) {
               fmt::format("must be >= 0, got {}", c.background_pressure));
 }
 
+// Two axis-aligned boxes share volume (more than the slack on every axis).
+bool boxes_overlap(const Triple& lo1, const Triple& hi1, const Triple& lo2, const Triple& hi2,
+                   std::size_t dim, double eps) {
+    bool overlap = true;
+    for (std::size_t a = 0; a < dim; ++a)
+        overlap = overlap && std::min(hi1[a], hi2[a]) - std::max(lo1[a], lo2[a]) > eps;
+    return overlap;
+}
+
 void read_blocks(const Section& root, CaseConfig& c) {
     const auto blocks = root.entries("blocks");
     if (blocks.empty())
@@ -774,6 +786,50 @@ void read_walls(const Section& s, CaseConfig& c) {
         for (double& x : w.normal)
             x /= len;
         c.planes.push_back(w);
+    }
+
+    for (const auto& b : s.entries("boxes")) {
+        b.require(c.walls == WallModel::dummy, "lo",
+                  "wall boxes are made of dummy wall particles: they need walls.model = \"dummy\"");
+        WallBox box;
+        box.lo = b.required_triple("lo", "lower corner of the solid box [m]");
+        box.hi = b.required_triple("hi", "upper corner of the solid box [m]");
+        for (std::size_t a = 0; a < dim; ++a) {
+            b.require(box.lo[a] < box.hi[a], "hi",
+                      fmt::format("must be above lo on every axis; on {}: lo = {}, hi = {}",
+                                  kAxis[a], box.lo[a], box.hi[a]));
+            b.require(box.lo[a] >= c.domain_lo[a] - eps, "lo",
+                      fmt::format("the box lies outside the domain: {} = {} is below "
+                                  "domain.lo = {}",
+                                  kAxis[a], box.lo[a], c.domain_lo[a]));
+            b.require(box.hi[a] <= c.domain_hi[a] + eps, "hi",
+                      fmt::format("the box lies outside the domain: {} = {} is above "
+                                  "domain.hi = {}",
+                                  kAxis[a], box.hi[a], c.domain_hi[a]));
+            // Like a block, the box holds round(extent / dx) lattice sites per axis.
+            b.require(std::round((box.hi[a] - box.lo[a]) / c.dx) >= 1, "hi",
+                      fmt::format("the box is {} m thick along {}, less than half of dx = {} m: "
+                                  "it would hold no particle",
+                                  box.hi[a] - box.lo[a], kAxis[a], c.dx));
+        }
+        // Tank wall layers lie outside the walled faces; a box reaching past one would put
+        // two wall particles on one site.
+        for (const auto& f : c.tank_faces) {
+            const auto a = static_cast<std::size_t>(f[0] - 'x');
+            const bool low = f[1] == '-';
+            const bool inside =
+                low ? box.lo[a] >= c.tank_lo[a] - eps : box.hi[a] <= c.tank_hi[a] + eps;
+            b.require(inside, low ? "lo" : "hi",
+                      fmt::format("the box extends beyond the tank wall \"{}\" at {} = {}", f,
+                                  kAxis[a], low ? c.tank_lo[a] : c.tank_hi[a]));
+        }
+        for (std::size_t j = 0; j < c.boxes.size(); ++j)
+            b.require(!boxes_overlap(box.lo, box.hi, c.boxes[j].lo, c.boxes[j].hi, dim, eps), "lo",
+                      fmt::format("the box overlaps walls.boxes[{}]", j));
+        for (std::size_t j = 0; j < c.blocks.size(); ++j)
+            b.require(!boxes_overlap(box.lo, box.hi, c.blocks[j].lo, c.blocks[j].hi, dim, eps),
+                      "lo", fmt::format("the box overlaps the fluid of blocks[{}]", j));
+        c.boxes.push_back(box);
     }
 }
 

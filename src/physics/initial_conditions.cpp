@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace sluice {
 
@@ -14,9 +15,10 @@ int lattice_count(double lo, double hi, double dx) {
     return std::max(0, static_cast<int>(std::round((hi - lo) / dx)));
 }
 
+// Calls f(k, x) for every lattice site k (integer coordinates) at x = lo + (k + 1/2) dx.
 template <int D, class F>
-void for_each_lattice_point(const std::array<double, D>& lo, const std::array<int, D>& n, double dx,
-                            F&& f) {
+void for_each_lattice_site(const std::array<double, D>& lo, const std::array<int, D>& n, double dx,
+                           F&& f) {
     std::array<int, D> k{};
     std::size_t total = 1;
     for (int d = 0; d < D; ++d)
@@ -29,8 +31,15 @@ void for_each_lattice_point(const std::array<double, D>& lo, const std::array<in
             r /= static_cast<std::size_t>(n[d]);
             x[d] = lo[d] + (k[d] + 0.5) * dx;
         }
-        f(x);
+        f(std::as_const(k), std::as_const(x));
     }
+}
+
+template <int D, class F>
+void for_each_lattice_point(const std::array<double, D>& lo, const std::array<int, D>& n, double dx,
+                            F&& f) {
+    for_each_lattice_site<D>(lo, n, dx,
+                             [&](const std::array<int, D>&, const Vec<D>& x) { f(Vec<D>(x)); });
 }
 
 // Height above the bottom of a column at rest of the particle below which a mass sigma_below
@@ -55,6 +64,16 @@ bool face_walled(const CaseConfig& cfg, int axis, bool upper) {
     static constexpr const char* names[3][2] = {{"x-", "x+"}, {"y-", "y+"}, {"z-", "z+"}};
     const std::string want = names[axis][upper ? 1 : 0];
     return std::find(cfg.tank_faces.begin(), cfg.tank_faces.end(), want) != cfg.tank_faces.end();
+}
+
+// Lattice sites of a wall box within `layers` sites of its surface: deeper sites are more than
+// one kernel support from any fluid particle, so they would never take part in a sum.
+template <int D>
+bool in_box_shell(const std::array<int, D>& k, const std::array<int, D>& n, int layers) {
+    for (int d = 0; d < D; ++d)
+        if (k[d] < layers || k[d] >= n[d] - layers)
+            return true;
+    return false;
 }
 
 } // namespace
@@ -143,6 +162,20 @@ void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
         P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(), cfg.rho0,
                     mass);
     });
+    // Solid obstacles: the box's lattice sites, `layers` deep from its surface.
+    for (const WallBox& b : cfg.boxes) {
+        std::array<double, D> blo{};
+        std::array<int, D> bn{};
+        for (int d = 0; d < D; ++d) {
+            blo[d] = b.lo[d];
+            bn[d] = lattice_count(b.lo[d], b.hi[d], dx);
+        }
+        for_each_lattice_site<D>(blo, bn, dx, [&](const std::array<int, D>& k, const Vec<D>& x) {
+            if (in_box_shell<D>(k, bn, layers))
+                P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(),
+                            cfg.rho0, mass);
+        });
+    }
 }
 
 std::size_t count_fluid_particles(const CaseConfig& cfg) {
@@ -166,7 +199,17 @@ std::size_t count_wall_particles(const CaseConfig& cfg, int layers) {
         outer *= static_cast<std::size_t>(lattice_count(lo, hi, cfg.dx));
         inner *= static_cast<std::size_t>(lattice_count(cfg.tank_lo[d], cfg.tank_hi[d], cfg.dx));
     }
-    return outer - inner;
+    std::size_t boxes = 0;
+    for (const WallBox& b : cfg.boxes) {
+        std::size_t all = 1, deep = 1;
+        for (int d = 0; d < cfg.dimension; ++d) {
+            const int n = lattice_count(b.lo[d], b.hi[d], cfg.dx);
+            all *= static_cast<std::size_t>(n);
+            deep *= static_cast<std::size_t>(std::max(0, n - 2 * layers));
+        }
+        boxes += all - deep;
+    }
+    return outer - inner + boxes;
 }
 
 template void add_fluid_blocks<2>(const CaseConfig&, const Eos&, Particles<2>&);

@@ -2,6 +2,7 @@
 // progress, summary). No physics here.
 #include "sluice/solver/run.hpp"
 
+#include "sluice/core/neighbour_census.hpp"
 #include "sluice/io/errors.hpp"
 #include "sluice/io/probe_writer.hpp"
 #include "sluice/io/progress.hpp"
@@ -60,6 +61,12 @@ double probe_value(const Simulation<D>& sim, const Particles<D>& P, const ProbeC
         return surge_front(P, dx);
     }
     return std::nan("");
+}
+
+nlohmann::json census_json(const NeighbourCensus& n) {
+    return {{"fluid_particles", n.fluid},   {"wall_particles", n.wall},
+            {"fluid_fluid", n.fluid_fluid}, {"fluid_wall", n.fluid_wall},
+            {"wall_fluid", n.wall_fluid},   {"wall_wall", n.wall_wall}};
 }
 
 // Per-rank profile as a flat list of numbers (same layout on every rank).
@@ -212,11 +219,17 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     };
 
     RunResult result;
+    // Neighbour pairs by kind at the start and the end (rank 0, outside the timed loop): the
+    // benchmarks turn them into achieved interactions per second per stage.
+    const Real support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+    NeighbourCensus census_start;
     {
         const Particles<D> all = sim.gather_particles();
         result.particles = all.size();
         result.fluid_particles = all.count(Kind::fluid);
         result.mass_initial = all.total_mass();
+        if (root)
+            census_start = count_neighbours<D>(sim.grid(), all, support);
     }
     std::uint64_t total_particles = result.particles;
     {
@@ -256,7 +269,13 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.simulated_time = sim.time();
     result.particle_steps_per_second = static_cast<double>(total_particles) *
                                        static_cast<double>(result.steps) / result.wall_seconds;
-    result.mass_final = sim.gather_particles().total_mass();
+    NeighbourCensus census_end;
+    {
+        const Particles<D> all = sim.gather_particles();
+        result.mass_final = all.total_mass();
+        if (root)
+            census_end = count_neighbours<D>(sim.grid(), all, support);
+    }
     if (!opts.trace_path.empty())
         sim.write_trace(opts.trace_path);
 
@@ -286,6 +305,9 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     extra["decompositions"] = sim.decompositions();
     extra["last_dt"] = sim.dt();
     extra["parallel"] = parallel;
+    extra["neighbours"] = {{"support", support},
+                           {"start", census_json(census_start)},
+                           {"end", census_json(census_end)}};
     nlohmann::json rebal = nlohmann::json::array();
     for (const auto& r : sim.rebalances())
         rebal.push_back({{"step", r.step},

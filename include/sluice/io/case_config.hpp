@@ -40,6 +40,11 @@ struct WallPlane {
     Triple normal{};
 };
 
+// A solid obstacle: an axis-aligned box of fixed dummy wall particles inside the tank.
+struct WallBox {
+    Triple lo{}, hi{}; // [m] lattice sites of spacing dx centred in the box
+};
+
 struct ProbeConfig {
     std::string name; // file name stem: probes/<name>.csv
     ProbeType type = ProbeType::pressure;
@@ -106,6 +111,7 @@ struct CaseConfig {
     Triple tank_lo{}, tank_hi{};         // tank box: walls sit on its faces
     std::vector<std::string> tank_faces; // which faces carry walls: "x-","x+","y-","y+","z-","z+"
     std::vector<WallPlane> planes;       // extra reflective planes
+    std::vector<WallBox> boxes;          // dummy walls only: solid obstacles
     double restitution = 1.0;            // reflective walls: normal velocity kept after a bounce
     bool no_slip = true;                 // dummy walls: no-slip (Adami) or free-slip
 

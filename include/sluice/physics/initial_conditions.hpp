@@ -23,7 +23,9 @@ template <int D>
 void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P);
 
 // Dummy wall particles (model = dummy): `layers` lattice layers outside each tank face named
-// in tank_faces, filling corners between walled faces. Ids continue after the fluid.
+// in tank_faces, filling corners between walled faces, then every [[walls.boxes]] obstacle
+// as the lattice sites of the box (spacing dx, centred like a fluid block's) within `layers`
+// sites of its surface. Ids continue after the fluid.
 template <int D>
 void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P);
 

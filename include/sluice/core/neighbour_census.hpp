@@ -1,0 +1,26 @@
+#pragma once
+// Neighbour counts of a particle set, by kind: how many (i, j) pairs within the kernel support
+// a step's neighbour loops visit. A diagnostic for benchmarks (achieved interactions per
+// second), computed on a copy outside the time loop; the solver never calls it while stepping.
+#include "sluice/core/cell_grid.hpp"
+#include "sluice/core/particles.hpp"
+
+#include <cstdint>
+
+namespace sluice {
+
+// Ordered pairs (i, j), i != j, with |x_i - x_j| < support, by the kinds of i and j.
+struct NeighbourCensus {
+    std::uint64_t fluid = 0, wall = 0;             // particles of each kind
+    std::uint64_t fluid_fluid = 0, fluid_wall = 0; // i fluid; j fluid / wall
+    std::uint64_t wall_fluid = 0, wall_wall = 0;   // i wall; j fluid / wall
+};
+
+// Counts over P (a copy: it is sorted into cells of `grid`, periodic images included).
+template <int D>
+NeighbourCensus count_neighbours(const CellGrid<D>& grid, Particles<D> P, Real support);
+
+extern template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, Particles<2>, Real);
+extern template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, Particles<3>, Real);
+
+} // namespace sluice

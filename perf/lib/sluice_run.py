@@ -1,0 +1,157 @@
+"""Running `sluice` from the benchmark scripts (perf/throughput, perf/speed_vs_error).
+
+One run = one `sluice run` process. Its peak resident memory comes from the kernel's
+accounting of that very child (os.wait4 -> ru_maxrss), so no external `time` tool is needed
+and runs do not contaminate each other's figures. Needs only the Python standard library.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import time
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+DEFAULT_SLUICE = ROOT / "build" / "release" / "sluice"
+
+
+@dataclass
+class Run:
+    """What one finished `sluice run` gives back."""
+
+    case: str
+    out_dir: Path
+    returncode: int
+    process_wall_s: float  # whole process: start-up, particle generation, time loop, output
+    cpu_s: float  # user + system time of the process (all its threads)
+    peak_rss_bytes: int
+    summary: dict = field(default_factory=dict)  # summary.json ({} if the run failed)
+    stderr_tail: str = ""
+
+    @property
+    def ok(self) -> bool:
+        return self.returncode == 0 and bool(self.summary)
+
+
+def ensure_binary(sluice: Path) -> Path:
+    """Builds the Release binary if it is missing (as perf/strong_scaling/run.sh does)."""
+    if not sluice.exists():
+        print(f"== {sluice} missing: building it (cmake --preset release)", flush=True)
+        subprocess.run(["cmake", "--preset", "release"], cwd=ROOT, check=True)
+        subprocess.run(["cmake", "--build", "--preset", "release", "-j2", "--target", "sluice"],
+                       cwd=ROOT, check=True)
+    return sluice
+
+
+def read_case(path: Path, overrides: dict[str, object] | None = None) -> dict:
+    """The case file as a dict, with dotted-key overrides applied (only plain table keys)."""
+    with open(path, "rb") as f:
+        case = tomllib.load(f)
+    for key, value in (overrides or {}).items():
+        node = case
+        parts = key.split(".")
+        for p in parts[:-1]:
+            node = node[int(p)] if isinstance(node, list) else node.setdefault(p, {})
+        node[parts[-1]] = value
+    return case
+
+
+def acoustic_dt(case: dict) -> float:
+    """The solver's time step at rest: cfl * h / c0 (or the case's fixed dt)."""
+    num = case.get("numerics", {})
+    if "dt" in num:
+        return float(num["dt"])
+    h = float(num.get("h_over_dx", 1.0)) * float(case["particles"]["dx"])
+    return float(num.get("cfl", 0.25)) * h / float(case["fluid"]["sound_speed"])
+
+
+def toml_value(v: object) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return f'"{v}"'
+    if isinstance(v, float):
+        return repr(v)
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(toml_value(x) for x in v) + "]"
+    return str(v)
+
+
+def run_sluice(sluice: Path, case: Path, out_dir: Path, threads: int,
+               overrides: dict[str, object] | None = None, nice: int = 0,
+               echo: bool = True) -> Run:
+    """Runs `sluice run CASE --threads T --out DIR -q --set k=v ...` and waits for it."""
+    if out_dir.exists():
+        shutil.rmtree(out_dir)
+    cmd = [str(sluice), "run", str(case), "--threads", str(threads), "--out", str(out_dir), "-q"]
+    for k, v in (overrides or {}).items():
+        cmd += ["--set", f"{k}={toml_value(v)}"]
+    if echo:
+        print("   $ " + " ".join(cmd), flush=True)
+    preexec = (lambda: os.nice(nice)) if nice else None
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=preexec)
+    # Read stderr fully before reaping, so the pipe never blocks the child.
+    err = proc.stderr.read() if proc.stderr else ""
+    _, status, ru = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    summary = {}
+    sfile = out_dir / "summary.json"
+    if proc.returncode == 0 and sfile.exists():
+        with open(sfile) as f:
+            summary = json.load(f)
+    return Run(case=str(case), out_dir=out_dir, returncode=proc.returncode, process_wall_s=wall,
+               cpu_s=ru.ru_utime + ru.ru_stime, peak_rss_bytes=ru.ru_maxrss * 1024,  # Linux: KiB
+               summary=summary, stderr_tail="\n".join(err.strip().splitlines()[-5:]))
+
+
+def machine_description() -> str:
+    """CPU model, core count and load at the time of the call (for the record)."""
+    model = "unknown CPU"
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    load = os.getloadavg()
+    return (f"{model}, {os.cpu_count()} logical cores, load average "
+            f"{load[0]:.2f} / {load[1]:.2f} / {load[2]:.2f} (1/5/15 min)")
+
+
+def git_revision() -> str:
+    try:
+        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, check=True,
+                              capture_output=True, text=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def fit_line(xs: list[float], ys: list[float]) -> tuple[float, float]:
+    """Least-squares y = a + b x; returns (a, b)."""
+    n = len(xs)
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxx = sum((x - mx) ** 2 for x in xs)
+    b = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else 0.0
+    return my - b * mx, b
+
+
+def power_law_exponent(xs: list[float], ys: list[float]) -> float:
+    """Slope of log y against log x (1 = linear in N)."""
+    return fit_line([math.log(x) for x in xs], [math.log(y) for y in ys])[1]
+
+
+def die(msg: str, code: int = 2) -> None:
+    print(msg, file=sys.stderr)
+    sys.exit(code)
+
+

@@ -1,0 +1,138 @@
+"""Error of a finished sluice run, computed from its output files alone (probes/*.csv,
+snapshots/*.h5), with the same definitions as the validation tests in tests/validation/:
+
+* dam break     test_dam_break_2d.cpp:   RMS relative deviation of the surge front Z = x/a
+                from Martin & Moyce (1952), n^2 = 2, over their points with T = t sqrt(2g/a) <= 3
+                (tests/data/martin_moyce_1952_n2_2.csv), the simulated front interpolated
+                linearly in T and starting at (T, Z) = (0, 1).
+* hydrostatic   test_hydrostatic_2d.cpp: worst relative deviation of the bottom-centre pressure
+                probe from rho0 g (H - y_probe) over the samples with t >= 1 s.
+* taylor-green  test_taylor_green_2d.cpp: relative error of KE(t)/KE(0) against
+                exp(-16 pi^2 nu t / L^2) at the final time.
+* poiseuille    test_poiseuille_2d.cpp:  L2 relative error of the fluid x-velocity against the
+                Morris et al. (1997, eq. 21) start-up series at the final time.
+"""
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _probe(out_dir: Path, name: str) -> tuple[list[float], list[float]]:
+    ts, vs = [], []
+    with open(out_dir / "probes" / f"{name}.csv") as f:
+        rows = csv.reader(f)
+        next(rows)
+        for r in rows:
+            ts.append(float(r[0]))
+            vs.append(float(r[1]))
+    return ts, vs
+
+
+def _interp(xs: list[float], ys: list[float], x: float) -> float:
+    if x <= xs[0]:
+        return ys[0]
+    for k in range(1, len(xs)):
+        if x <= xs[k]:
+            w = (x - xs[k - 1]) / (xs[k] - xs[k - 1])
+            return ys[k - 1] + w * (ys[k] - ys[k - 1])
+    return ys[-1]
+
+
+def _snapshots(out_dir: Path) -> list[Path]:
+    return sorted((out_dir / "snapshots").glob("snap_*.h5"))
+
+
+def dam_break_front(out_dir: Path, case: dict) -> float:
+    block = case["blocks"][0]
+    a = block["hi"][0] - block["lo"][0]
+    g = abs(case["fluid"].get("gravity", [0, -9.81])[-1])
+    t_scale = math.sqrt(2 * g / a)
+    ts, xs = _probe(out_dir, "front")
+    Ts = [0.0] + [t * t_scale for t in ts if t > 0]
+    Zs = [1.0] + [x / a for t, x in zip(ts, xs) if t > 0]
+    sum2, n = 0.0, 0
+    with open(ROOT / "tests" / "data" / "martin_moyce_1952_n2_2.csv") as f:
+        rows = csv.reader(line for line in f if not line.startswith("#"))
+        next(rows)
+        for r in rows:
+            T, Z = float(r[1]), float(r[2])
+            if T > 3.0:
+                continue
+            rel = (_interp(Ts, Zs, T) - Z) / Z
+            sum2 += rel * rel
+            n += 1
+    return math.sqrt(sum2 / n)
+
+
+def hydrostatic_pressure(out_dir: Path, case: dict) -> float:
+    probe = case["probes"][0]
+    y = probe["position"][1]
+    g = abs(case["fluid"].get("gravity", [0, -9.81])[-1])
+    H = case["blocks"][0]["hi"][1]
+    p_ref = case["fluid"]["rho0"] * g * (H - y)
+    ts, ps = _probe(out_dir, probe["name"])
+    devs = [abs(p - p_ref) / p_ref for t, p in zip(ts, ps) if t >= 1.0 - 1e-9]
+    if not devs or any(math.isnan(d) for d in devs):
+        return float("nan")
+    return max(devs)
+
+
+def taylor_green_decay(out_dir: Path, case: dict) -> float:
+    import h5py
+    import numpy as np
+
+    snaps = _snapshots(out_dir)
+
+    def ke(path: Path) -> tuple[float, float]:
+        with h5py.File(path, "r") as f:
+            v = np.asarray(f["velocity"])
+            m = np.asarray(f["mass"]).reshape(-1)
+            return float(0.5 * np.sum(m * np.sum(v * v, axis=1))), float(f.attrs["time"])
+
+    ke0, t0 = ke(snaps[0])
+    ke1, t1 = ke(snaps[-1])
+    assert t0 == 0.0, "the first snapshot must be the initial state"
+    nu = case["fluid"]["viscosity"] / case["fluid"]["rho0"]
+    L = case["domain"]["hi"][0] - case["domain"]["lo"][0]
+    exact = math.exp(-16 * math.pi**2 * nu * t1 / L**2)
+    return abs(ke1 / ke0 - exact) / exact
+
+
+def poiseuille_series(y, t: float, F: float, nu: float, L: float):
+    import numpy as np
+
+    u = F / (2 * nu) * y * (L - y)
+    for n in range(200):
+        k = 2 * n + 1
+        u = u - 4 * F * L * L / (nu * math.pi**3 * k**3) * np.sin(k * math.pi * y / L) * math.exp(
+            -k * k * math.pi**2 * nu * t / L**2)
+    return u
+
+
+def poiseuille_profile(out_dir: Path, case: dict) -> float:
+    import h5py
+    import numpy as np
+
+    with h5py.File(_snapshots(out_dir)[-1], "r") as f:
+        x = np.asarray(f["position"])
+        v = np.asarray(f["velocity"])
+        kind = np.asarray(f["kind"]).reshape(-1)
+        t = float(f.attrs["time"])
+    fluid = kind == 0
+    F = case["fluid"]["gravity"][0]
+    nu = case["fluid"]["viscosity"] / case["fluid"]["rho0"]
+    L = case["walls"]["tank_hi"][1] - case["walls"]["tank_lo"][1]
+    ua = poiseuille_series(x[fluid, 1], t, F, nu, L)
+    return float(np.sqrt(np.sum((v[fluid, 0] - ua) ** 2) / np.sum(ua**2)))
+
+
+EVALUATORS = {
+    "dam_break": (dam_break_front, "RMS relative front deviation from Martin & Moyce (T <= 3)"),
+    "hydrostatic": (hydrostatic_pressure, "worst relative bottom-pressure error (t >= 1 s)"),
+    "taylor_green": (taylor_green_decay, "relative error of KE/KE0 at the end time"),
+    "poiseuille": (poiseuille_profile, "L2 relative velocity-profile error at the end time"),
+}
