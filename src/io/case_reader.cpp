@@ -37,7 +37,9 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"fluid",
      {"rho0", "viscosity", "sound_speed", "gravity", "eos", "gamma", "background_pressure"}},
     {"particles", {"dx"}},
-    {"blocks", {"lo", "hi", "velocity", "profile", "amplitude", "hydrostatic"}},
+    {"blocks",
+     {"lo", "hi", "shape", "velocity", "profile", "amplitude", "angular_velocity", "strain_rate",
+      "hydrostatic"}},
     {"numerics",
      {"kernel", "h_over_dx", "density", "delta_sph", "density_diffusion", "artificial_viscosity",
       "shifting", "cfl", "viscous_cfl", "force_cfl", "dt"}},
@@ -551,7 +553,12 @@ const std::vector<std::pair<std::string, EosType>> kEos = {{"linear", EosType::l
 const std::vector<std::pair<std::string, WallModel>> kWalls = {
     {"none", WallModel::none}, {"reflective", WallModel::reflective}, {"dummy", WallModel::dummy}};
 const std::vector<std::pair<std::string, VelocityProfile>> kProfiles = {
-    {"uniform", VelocityProfile::uniform}, {"taylor_green", VelocityProfile::taylor_green}};
+    {"uniform", VelocityProfile::uniform},
+    {"taylor_green", VelocityProfile::taylor_green},
+    {"rotating", VelocityProfile::rotating},
+    {"strain", VelocityProfile::strain}};
+const std::vector<std::pair<std::string, BlockShape>> kShapes = {{"box", BlockShape::box},
+                                                                 {"ellipse", BlockShape::ellipse}};
 const std::vector<std::pair<std::string, ProbeType>> kProbeTypes = {
     {"pressure", ProbeType::pressure},
     {"water_level", ProbeType::water_level},
@@ -639,6 +646,39 @@ bool boxes_overlap(const Triple& lo1, const Triple& hi1, const Triple& lo2, cons
     return overlap;
 }
 
+// Keys of the rotating and strain profiles: each needs its rate, only in 2-D, and the strain
+// profile's pressure is known for an ellipse only. An ellipse has no flat top, so the
+// hydrostatic start (depth below the box top) is refused under gravity.
+void read_block_profile(const Section& s, const CaseConfig& c, FluidBlock& b) {
+    const auto rate = [&](std::string_view key, VelocityProfile owner, const char* owner_name,
+                          const char* what) {
+        const auto v = s.number(key);
+        if (b.profile != owner) {
+            s.require(!v, key, fmt::format("applies only to profile = \"{}\"", owner_name));
+            return 0.0;
+        }
+        if (!v)
+            s.reader().fail(s.key(key), fmt::format("missing required key ({}; needed with "
+                                                    "profile = \"{}\")",
+                                                    what, owner_name));
+        s.require(c.dimension == 2, "profile",
+                  fmt::format("\"{}\" is a 2-D profile; this case is 3-D", owner_name));
+        return *v;
+    };
+    b.angular_velocity = rate("angular_velocity", VelocityProfile::rotating, "rotating",
+                              "angular velocity [rad/s], counter-clockwise positive");
+    b.strain_rate = rate("strain_rate", VelocityProfile::strain, "strain", "strain rate A0 [1/s]");
+    if (b.profile == VelocityProfile::strain)
+        s.require(b.shape == BlockShape::ellipse, "shape",
+                  "profile = \"strain\" needs shape = \"ellipse\" (its initial pressure is "
+                  "known for an elliptical drop only)");
+    const auto up = static_cast<std::size_t>(c.dimension - 1);
+    if (b.shape == BlockShape::ellipse && b.hydrostatic && c.gravity[up] != 0)
+        s.require(false, "hydrostatic",
+                  "an ellipse-shaped block has no flat top for the hydrostatic start; set "
+                  "hydrostatic = false (or switch gravity off)");
+}
+
 void read_blocks(const Section& root, CaseConfig& c) {
     const auto blocks = root.entries("blocks");
     if (blocks.empty())
@@ -664,9 +704,11 @@ void read_blocks(const Section& root, CaseConfig& c) {
         }
         if (auto v = s.triple("velocity"))
             b.velocity = *v;
+        b.shape = s.choice("shape", BlockShape::box, kShapes);
         b.profile = s.choice("profile", VelocityProfile::uniform, kProfiles);
         b.amplitude = s.number("amplitude", 0);
         b.hydrostatic = s.boolean("hydrostatic").value_or(true);
+        read_block_profile(s, c, b);
 
         // Two blocks sharing volume would put two particles on one lattice site.
         for (std::size_t j = 0; j < c.blocks.size(); ++j) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <utility>
+#include <type_traits>
 
 namespace sluice {
 
@@ -60,6 +61,18 @@ double settled_height(const Eos& eos, double g, double sigma_total, double sigma
     return sum * step / 3;
 }
 
+// Velocity gradient term tr(G^2) of a block's profile about its centre (0 if none).
+double profile_trace_g2(const FluidBlock& b) {
+    switch (b.profile) {
+    case VelocityProfile::rotating:
+        return -2 * b.angular_velocity * b.angular_velocity;
+    case VelocityProfile::strain:
+        return 2 * b.strain_rate * b.strain_rate;
+    default:
+        return 0;
+    }
+}
+
 bool face_walled(const CaseConfig& cfg, int axis, bool upper) {
     static constexpr const char* names[3][2] = {{"x-", "x+"}, {"y-", "y+"}, {"z-", "z+"}};
     const std::string want = names[axis][upper ? 1 : 0];
@@ -77,6 +90,59 @@ bool in_box_shell(const std::array<int, D>& k, const std::array<int, D>& n, int 
 }
 
 } // namespace
+
+bool inside_block_shape(const FluidBlock& b, const Triple& x, int dimension) {
+    double r2 = 0;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(dimension); ++d) {
+        if (x[d] < b.lo[d] || x[d] > b.hi[d])
+            return false;
+        const double half = 0.5 * (b.hi[d] - b.lo[d]);
+        const double xi = (x[d] - 0.5 * (b.lo[d] + b.hi[d])) / half;
+        r2 += xi * xi;
+    }
+    return b.shape == BlockShape::box || r2 <= 1;
+}
+
+double block_max_speed(const FluidBlock& b, int dimension) {
+    double v2 = 0, r2 = 0;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(dimension); ++d) {
+        v2 += b.velocity[d] * b.velocity[d];
+        const double half = 0.5 * (b.hi[d] - b.lo[d]);
+        r2 += half * half; // distance from the centre to a corner of the box
+    }
+    const double r = std::sqrt(r2);
+    double profile = 0;
+    if (b.profile == VelocityProfile::taylor_green)
+        profile = b.amplitude;
+    else if (b.profile == VelocityProfile::rotating)
+        profile = std::abs(b.angular_velocity) * r;
+    else if (b.profile == VelocityProfile::strain)
+        profile = std::abs(b.strain_rate) * r;
+    return std::sqrt(v2) + profile;
+}
+
+double rotating_rectangle_pressure(double rho0, double omega, double Lx, double Ly, double x,
+                                   double y) {
+    // The particular solution x (x - Lx) vanishes on the x edges; the harmonic series cancels
+    // it on the y edges. cosh(k s)/cosh(k Ly/2) with |s| <= Ly/2 is evaluated as
+    // exp(k (|s| - Ly/2)) (1 + exp(-2 k |s|)) / (1 + exp(-k Ly)) so that large k cannot
+    // overflow. 400 odd terms: truncation below 1e-6 of the centre value.
+    const double pi = std::numbers::pi;
+    const double s = std::abs(y - 0.5 * Ly);
+    double series = 0;
+    for (int m = 1; m < 800; m += 2) {
+        const double k = m * pi / Lx;
+        const double ratio =
+            std::exp(k * (s - 0.5 * Ly)) * (1 + std::exp(-2 * k * s)) / (1 + std::exp(-k * Ly));
+        series += 8 * Lx * Lx / std::pow(m * pi, 3) * std::sin(k * x) * ratio;
+    }
+    return -rho0 * omega * omega * (x * (Lx - x) - series);
+}
+
+double ellipse_pressure(double rho0, double trace_g2, double a, double b, double xi, double eta) {
+    const double p0 = 0.5 * rho0 * trace_g2 * a * a * b * b / (a * a + b * b);
+    return p0 * (1 - xi * xi / (a * a) - eta * eta / (b * b));
+}
 
 template <int D>
 void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
@@ -108,7 +174,17 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
         const bool settle = b.hydrostatic && cfg.density == DensityScheme::continuity && g[up] != 0;
         const double g_abs = std::abs(g[up]);
         const double sigma_total = cfg.rho0 * (top - b.lo[up]);
+        Triple centre{}, half{};
+        for (int d = 0; d < D; ++d) {
+            centre[d] = 0.5 * (b.lo[d] + b.hi[d]);
+            half[d] = 0.5 * (b.hi[d] - b.lo[d]);
+        }
         for_each_lattice_point<D>(lo, n, dx, [&](Vec<D> x) {
+            Triple at{};
+            for (int d = 0; d < D; ++d)
+                at[d] = x[d];
+            if (!inside_block_shape(b, at, D))
+                return;
             const double lattice_up = x[up];
             if (settle)
                 x[up] = b.lo[up] +
@@ -131,6 +207,22 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
                 p +=
                     -cfg.rho0 * b.amplitude * b.amplitude / 4 * (std::cos(2 * X) + std::cos(2 * Y));
             }
+            // Rotation and strain about the block centre (2-D; the reader refuses 3-D), with the
+            // pressure that keeps the velocity gradient steady at t = 0 and vanishes on the
+            // block's edge (see the header for the formulas).
+            const double xi = at[0] - centre[0], eta = at[1] - centre[1];
+            if (b.profile == VelocityProfile::rotating) {
+                v[0] += -b.angular_velocity * eta;
+                v[1] += b.angular_velocity * xi;
+            } else if (b.profile == VelocityProfile::strain) {
+                v[0] += -b.strain_rate * xi;
+                v[1] += b.strain_rate * eta;
+            }
+            if (b.profile == VelocityProfile::rotating && b.shape == BlockShape::box)
+                p += rotating_rectangle_pressure(cfg.rho0, b.angular_velocity, 2 * half[0],
+                                                 2 * half[1], at[0] - b.lo[0], at[1] - b.lo[1]);
+            else if (profile_trace_g2(b) != 0)
+                p += ellipse_pressure(cfg.rho0, profile_trace_g2(b), half[0], half[1], xi, eta);
             const double rho = eos.density(p);
             // Continuity: the mass of a lattice cell of the reference fluid, so a column holds
             // the mass of its height and the initial pressure lives in rho alone. Summation:
@@ -181,10 +273,38 @@ void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
 std::size_t count_fluid_particles(const CaseConfig& cfg) {
     std::size_t total = 0;
     for (const FluidBlock& b : cfg.blocks) {
-        std::size_t n = 1;
-        for (int d = 0; d < cfg.dimension; ++d)
-            n *= static_cast<std::size_t>(lattice_count(b.lo[d], b.hi[d], cfg.dx));
-        total += n;
+        std::array<double, 3> lo{};
+        std::array<int, 3> n{1, 1, 1};
+        std::size_t all = 1;
+        for (std::size_t d = 0; d < static_cast<std::size_t>(cfg.dimension); ++d) {
+            lo[d] = b.lo[d];
+            n[d] = lattice_count(b.lo[d], b.hi[d], cfg.dx);
+            all *= static_cast<std::size_t>(n[d]);
+        }
+        if (b.shape == BlockShape::box) {
+            total += all;
+            continue;
+        }
+        // Same lattice and test as add_fluid_blocks.
+        const auto count_in = [&](auto dim) {
+            constexpr int D = decltype(dim)::value;
+            std::array<double, D> l{};
+            std::array<int, D> k{};
+            for (int d = 0; d < D; ++d) {
+                l[d] = lo[static_cast<std::size_t>(d)];
+                k[d] = n[static_cast<std::size_t>(d)];
+            }
+            for_each_lattice_point<D>(l, k, cfg.dx, [&](const Vec<D>& x) {
+                Triple at{};
+                for (int d = 0; d < D; ++d)
+                    at[static_cast<std::size_t>(d)] = x[d];
+                total += inside_block_shape(b, at, D) ? 1 : 0;
+            });
+        };
+        if (cfg.dimension == 2)
+            count_in(std::integral_constant<int, 2>{});
+        else
+            count_in(std::integral_constant<int, 3>{});
     }
     return total;
 }

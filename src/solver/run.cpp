@@ -338,12 +338,8 @@ CaseInfo describe_case(const CaseConfig& cfg) {
     double g = 0, vmax = 0;
     for (int d = 0; d < cfg.dimension; ++d)
         g += cfg.gravity[d] * cfg.gravity[d];
-    for (const auto& b : cfg.blocks) {
-        double v2 = 0;
-        for (int d = 0; d < cfg.dimension; ++d)
-            v2 += b.velocity[d] * b.velocity[d];
-        vmax = std::max(vmax, std::sqrt(v2) + b.amplitude);
-    }
+    for (const auto& b : cfg.blocks)
+        vmax = std::max(vmax, block_max_speed(b, cfg.dimension));
     const TimeStepParams prm{info.h, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl,
                              cfg.force_cfl};
     const TimeStepLimits l = particle_time_step(prm, cfg.sound_speed, vmax, std::sqrt(g));

@@ -449,3 +449,74 @@ selection = "convex-hull"
     expect_error(kValid2D + "\n[neighbours.divergence]\nselection = \"radius\"\n",
                  "neighbours.divergence");
 }
+
+TEST_CASE("block shapes and the rotating and strain profiles") {
+    const std::string b1 = "hydrostatic = false";
+    {
+        const auto c = read_case(
+            write_case("rot", edit(b1, b1 + "\nprofile = \"rotating\"\nangular_velocity = -2.5")));
+        CHECK(c.blocks[1].profile == VelocityProfile::rotating);
+        CHECK(c.blocks[1].angular_velocity == -2.5);
+        CHECK(c.blocks[1].shape == BlockShape::box);
+    }
+    {
+        const auto c = read_case(write_case(
+            "drop",
+            edit(b1, b1 + "\nshape = \"ellipse\"\nprofile = \"strain\"\nstrain_rate = 100")));
+        CHECK(c.blocks[1].shape == BlockShape::ellipse);
+        CHECK(c.blocks[1].profile == VelocityProfile::strain);
+        CHECK(c.blocks[1].strain_rate == 100);
+    }
+    CHECK(contains(expect_error(edit(b1, b1 + "\nshape = \"disk\""), "blocks[1].shape"),
+                   "\"ellipse\""));
+    CHECK(contains(
+        expect_error(edit(b1, b1 + "\nprofile = \"rotating\""), "blocks[1].angular_velocity"),
+        "missing required key"));
+    CHECK(contains(
+        expect_error(edit(b1, b1 + "\nangular_velocity = 1"), "blocks[1].angular_velocity"),
+        "applies only to profile = \"rotating\""));
+    expect_error(edit(b1, b1 + "\nprofile = \"rotating\"\nstrain_rate = 1\nangular_velocity = 1"),
+                 "blocks[1].strain_rate");
+    CHECK(contains(
+        expect_error(edit(b1, b1 + "\nprofile = \"strain\"\nstrain_rate = 1"), "blocks[1].shape"),
+        "needs shape = \"ellipse\""));
+    expect_error(edit(b1, b1 + "\nprofile = \"rotating\"\nangular_velocity = \"fast\""),
+                 "blocks[1].angular_velocity");
+    // An ellipse has no flat top: the hydrostatic start (the default) is refused under gravity.
+    CHECK(contains(expect_error(edit("hi = [1, 2]", "hi = [1, 2]\nshape = \"ellipse\""),
+                                "blocks[0].hydrostatic"),
+                   "no flat top"));
+    CHECK_NOTHROW(read_case(
+        write_case("nog", edit("hi = [1, 2]", "hi = [1, 2]\nshape = \"ellipse\"",
+                               edit("viscosity = 1e-3", "viscosity = 1e-3\ngravity = [0, 0]")))));
+}
+
+TEST_CASE("the rotating and strain profiles are 2-D only") {
+    const std::string cube = R"(
+[case]
+dimension = 3
+[domain]
+lo = [0, 0, 0]
+hi = [1, 1, 1]
+[fluid]
+rho0 = 1000
+viscosity = 0
+sound_speed = 20
+gravity = [0, 0, 0]
+[particles]
+dx = 0.05
+[[blocks]]
+lo = [0, 0, 0]
+hi = [0.5, 0.5, 0.5]
+shape = "ellipse"
+profile = "rotating"
+angular_velocity = 1
+[time]
+end_time = 0.5
+)";
+    CHECK(contains(expect_error(cube, "blocks[0].profile"), "2-D profile"));
+    CHECK(read_case(
+              write_case("ball", edit("profile = \"rotating\"\nangular_velocity = 1\n", "", cube)))
+              .blocks[0]
+              .shape == BlockShape::ellipse);
+}

@@ -23,15 +23,24 @@ enum class DensityScheme { summation, continuity };
 enum class DensityDiffusion { antuono, fourtakas };
 enum class EosType { linear, tait };
 enum class WallModel { none, reflective, dummy };
-enum class VelocityProfile { uniform, taylor_green };
+// Initial velocity (and matching pressure) over a block: uniform, the Taylor-Green vortex,
+// rigid rotation about the block centre (rotating square patch, Colagrossi 2005), or the
+// straining flow of Monaghan's (1994) elliptical drop.
+enum class VelocityProfile { uniform, taylor_green, rotating, strain };
+// Which lattice points of a block's box are filled: all of them, or those inside the ellipse
+// (ellipsoid in 3-D) inscribed in the box.
+enum class BlockShape { box, ellipse };
 enum class ProbeType { pressure, water_level, surge_front };
 
 struct FluidBlock {
     Triple lo{}, hi{}; // [m] axis-aligned box filled on a lattice of spacing dx
+    BlockShape shape = BlockShape::box;
     Triple velocity{}; // [m/s] initial velocity (uniform profile)
     VelocityProfile profile = VelocityProfile::uniform;
-    double amplitude = 0;    // [m/s] velocity scale of a non-uniform profile
-    bool hydrostatic = true; // initial density/pressure from rho0*|g|*(depth) with the EOS
+    double amplitude = 0;        // [m/s] velocity scale of the Taylor-Green profile
+    double angular_velocity = 0; // [rad/s] rotating profile, counter-clockwise positive (2-D)
+    double strain_rate = 0;      // [1/s] strain profile: v = (-A0 x, A0 y) about the centre
+    bool hydrostatic = true;     // initial density/pressure from rho0*|g|*(depth) with the EOS
 };
 
 // A planar reflective wall: particles are kept on the side the normal points to.
