@@ -504,8 +504,11 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
     // The first stage finds the group's neighbours once; every later stage of the step reuses
     // them (positions do not change within a step).
     if (stage == 0)
-        nb.build_list(topo_.cells[static_cast<std::size_t>(group)], list,
-                      [&kernel](Real r2) { return grad_factor(kernel, r2); });
+        nb.build_list(
+            topo_.cells[static_cast<std::size_t>(group)], list,
+            [&kernel](Real r2) { return grad_factor(kernel, r2); },
+            [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; },
+            [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; });
     nb.list = &list;
     const auto& cells = topo_.cells[static_cast<std::size_t>(group)];
     const StageKind kind = stage_kinds_[static_cast<std::size_t>(stage)];

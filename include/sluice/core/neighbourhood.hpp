@@ -22,14 +22,14 @@ struct AdjacentCells {
 // without the list. Buffers keep their capacity between steps (no allocation in a step).
 template <int D>
 struct NeighbourList {
-    std::uint32_t first = 0;           // index of the first particle of the range
-    std::vector<std::uint32_t> offset; // pairs of particle first + k: [offset[k], offset[k+1])
-    std::vector<std::uint32_t> j;      // neighbour index
-    std::vector<Vec<D>> shift;         // periodic image shift added to x_i - x_j (only when
-                                       // an axis is periodic: every shift is zero otherwise)
-    std::vector<Real> factor;          // per pair: the radial factor given to build_list
-    std::size_t pairs = 0;             // pairs found (the arrays may be longer)
-    bool periodic = false;             // whether `shift` holds the image shifts
+    std::uint32_t first = 0;                // index of the first particle of the range
+    std::vector<std::uint32_t> offset;      // pairs of particle first + k: [offset[k], offset[k+1])
+    std::vector<std::uint32_t> j;           // neighbour index
+    std::vector<Vec<D>> shift;              // periodic image shift added to x_i - x_j (only when
+                                            // an axis is periodic: every shift is zero otherwise)
+    std::vector<Real> factor;               // per pair: the radial factor given to build_list
+    std::size_t pairs = 0;                  // pairs found (the arrays may be longer)
+    bool periodic = false;                  // whether `shift` holds the image shifts
     std::vector<AdjacentCells<D>> adjacent; // scratch: adjacent cells of each cell of the range
     [[nodiscard]] bool covers(std::uint32_t i) const {
         return i >= first && i + 1 < first + offset.size();
@@ -121,10 +121,13 @@ struct Neighbourhood {
 
     // Fills `out` with the neighbours of the particles of `cells`, which must be contiguous
     // in the particle arrays and given in storage order (a cell group's cells), and with
-    // factor(r2) for every pair (see for_each_pair).
-    template <class G>
+    // factor(r2) for every pair (see for_each_pair). For a centre i with partial(i) true,
+    // only the neighbours j with wanted(j) are listed (the solver lists only fluid partners of
+    // wall particles: nothing reads wall-wall pairs, and in 3-D they are half of all pairs).
+    template <class G, class Partial, class Wanted>
     SLUICE_FLATTEN void build_list(std::span<const CellIndex> group_cells, NeighbourList<D>& out,
-                                   const G& factor) const {
+                                   const G& factor, const Partial& partial,
+                                   const Wanted& wanted) const {
         out.first = group_cells.empty() ? 0 : cells->begin[group_cells.front()];
         // Size the buffers for every candidate pair first, so that the scan below writes
         // without a capacity check per pair; they keep their capacity between steps.
@@ -135,7 +138,8 @@ struct Neighbourhood {
             out.adjacent[g] = adjacent(c);
             std::size_t candidates = 0;
             for (int k = 0; k < out.adjacent[g].count; ++k)
-                candidates += end(out.adjacent[g].cell[k].cell) - begin(out.adjacent[g].cell[k].cell);
+                candidates +=
+                    end(out.adjacent[g].cell[k].cell) - begin(out.adjacent[g].cell[k].cell);
             bound += candidates * (end(c) - begin(c));
             n_particles += end(c) - begin(c);
         }
@@ -158,6 +162,7 @@ struct Neighbourhood {
             const AdjacentCells<D>& adj = out.adjacent[g];
             for (std::uint32_t i = begin(c); i < end(c); ++i) {
                 const Vec<D> xi = x[i];
+                const bool all = !partial(i);
                 for (int k = 0; k < adj.count; ++k) {
                     const CellIndex nc = adj.cell[k].cell;
                     const Vec<D> xis = xi + adj.cell[k].shift;
@@ -170,6 +175,13 @@ struct Neighbourhood {
                             out.shift[n] = adj.cell[k].shift;
                             js[n] = j;
                             r2s[n] = r2;
+                            n += r2 < support2 && (all || wanted(j)) ? 1 : 0;
+                        }
+                    else if (all)
+                        for (std::uint32_t j = begin(nc); j < e; ++j) {
+                            const Real r2 = (xis - x[j]).squaredNorm();
+                            js[n] = j;
+                            r2s[n] = r2;
                             n += r2 < support2 ? 1 : 0;
                         }
                     else
@@ -177,7 +189,7 @@ struct Neighbourhood {
                             const Real r2 = (xis - x[j]).squaredNorm();
                             js[n] = j;
                             r2s[n] = r2;
-                            n += r2 < support2 ? 1 : 0;
+                            n += r2 < support2 && wanted(j) ? 1 : 0;
                         }
                 }
                 out.offset[++row] = static_cast<std::uint32_t>(n);
