@@ -74,6 +74,14 @@ grep -q "stopped by SIGTERM" "$work/term.txt" || fail "SIGTERM message: $(cat "$
     --set checkpoint.every_steps=7 || fail "restart after SIGTERM: exit $?"
 same_results "$work/ref" "$work/term" "SIGTERM + restart"
 
+# Wall-clock cadence: every 0.001 minutes a checkpoint replaces the last; a run that finished
+# leaves its last one, from which the end is reached again with the same results.
+"$exe" run "$case_file" --out "$work/wall" "${sets[@]}" --threads 1 \
+    --set checkpoint.every_minutes=0.001 || fail "every_minutes run: exit $?"
+[ -f "$work/wall/checkpoint.h5" ] || fail "every_minutes wrote no checkpoint"
+"$exe" run "$case_file" --restart "$work/wall" "${sets[@]}" || fail "restart (wall): exit $?"
+same_results "$work/ref" "$work/wall" "every_minutes checkpoint + restart"
+
 # Refusals: exit code 2 and the reason; the folder is not touched.
 refused() { # label expected-text dir args...
     local label=$1 text=$2 dir=$3
