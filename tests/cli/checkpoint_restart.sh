@@ -74,6 +74,21 @@ grep -q "stopped by SIGTERM" "$work/term.txt" || fail "SIGTERM message: $(cat "$
     --set checkpoint.every_steps=7 || fail "restart after SIGTERM: exit $?"
 same_results "$work/ref" "$work/term" "SIGTERM + restart"
 
+# 3-D: the same through Checkpoint<3>.
+case3="$src/cases/dam_break_3d.toml"
+sets3=(--set time.end_time=0.02 --set time.output_interval=0.005 --quiet)
+"$exe" run "$case3" --out "$work/ref3" "${sets3[@]}" --threads 1 || fail "3-D reference: exit $?"
+"$exe" run "$case3" --out "$work/term3" "${sets3[@]}" --threads 1 \
+    --set checkpoint.every_steps=5 2>/dev/null &
+pid=$!
+wait_checkpoint "$work/term3"
+kill -TERM $pid
+wait $pid
+code=$?
+[ $code -eq 4 ] || fail "3-D SIGTERM: exit code $code, expected 4"
+"$exe" run "$case3" --restart "$work/term3" "${sets3[@]}" --threads 2 || fail "3-D restart: exit $?"
+same_results "$work/ref3" "$work/term3" "3-D SIGTERM + restart"
+
 # Wall-clock cadence: every 0.001 minutes a checkpoint replaces the last; a run that finished
 # leaves its last one, from which the end is reached again with the same results.
 "$exe" run "$case_file" --out "$work/wall" "${sets[@]}" --threads 1 \
