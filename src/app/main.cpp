@@ -1,6 +1,7 @@
 // The `sluice` command line: run a case, describe a case.
-// Exit codes: 0 success, 1 unexpected failure, 2 bad case file or bad command line,
-// 3 the run failed physically (RunError).
+// Exit codes: 0 success, 1 unexpected failure, 2 bad case file, bad command line or a
+// checkpoint that cannot continue the case, 3 the run failed physically (RunError),
+// 4 stopped on request (SIGTERM/SIGINT or a stop file) after writing a checkpoint.
 #include "sluice/io/case_reader.hpp"
 #include "sluice/io/errors.hpp"
 #include "sluice/solver/run.hpp"
@@ -21,7 +22,7 @@
 
 namespace {
 
-constexpr int kExitFailure = 1, kExitCaseError = 2, kExitRunError = 3;
+constexpr int kExitFailure = 1, kExitCaseError = 2, kExitRunError = 3, kExitStopped = 4;
 
 std::string version_string() {
     const std::string rev = sluice::git_revision;
@@ -76,10 +77,18 @@ void add_case_options(CLI::App* cmd, std::string& case_path, std::vector<std::st
 
 } // namespace
 
+// What `sluice run` was given besides the case.
+struct RunFlags {
+    std::string out_dir, trace, restart;
+    int threads = 0;
+    bool quiet = false, verbose = false;
+    int debug_fail_rank = -1;
+    long debug_fail_step = -1;
+};
+
 // Reads the case and runs or describes it; returns the process exit code.
 int execute(bool run_requested, const std::string& case_path, const std::vector<std::string>& sets,
-            const std::string& out_dir, int threads, bool quiet, bool verbose,
-            const std::string& trace) {
+            const RunFlags& flags) {
     const sluice::tasks::Comm world = sluice::tasks::Comm::world();
     const bool root = world.rank() == 0;
     try {
@@ -87,13 +96,29 @@ int execute(bool run_requested, const std::string& case_path, const std::vector<
         const sluice::CaseConfig cfg = sluice::read_case(case_path, sets);
         if (run_requested) {
             sluice::RunOptions opts;
-            opts.out_dir = out_dir.empty() ? "results/" + cfg.name : out_dir;
-            opts.threads = threads;
-            opts.quiet = quiet;
-            opts.verbose = verbose;
-            opts.trace_path = trace;
+            // A restart continues in the folder it restarts from.
+            opts.out_dir = !flags.restart.empty()  ? flags.restart
+                           : flags.out_dir.empty() ? "results/" + cfg.name
+                                                   : flags.out_dir;
+            opts.threads = flags.threads;
+            opts.quiet = flags.quiet;
+            opts.verbose = flags.verbose;
+            opts.trace_path = flags.trace;
+            opts.restart_dir = flags.restart;
+            opts.debug_fail_rank = flags.debug_fail_rank;
+            opts.debug_fail_step = flags.debug_fail_step;
             const sluice::RunResult result = sluice::run_case(cfg, opts);
-            if (!quiet && root)
+            if (result.stopped) {
+                if (root)
+                    fmt::print(stderr,
+                               "sluice: stopped by {} after step {}, t = {:.6g} s; checkpoint "
+                               "written to {}\nsluice: continue with: sluice run {} --restart "
+                               "{} (plus the same --set options)\n",
+                               result.stop_reason, result.steps, result.simulated_time,
+                               result.checkpoint, cfg.source_file, opts.out_dir);
+                return kExitStopped;
+            }
+            if (!flags.quiet && root)
                 fmt::print(stderr,
                            "sluice: done: {} steps to t = {:.6g} s in {:.1f} s; results in {}\n",
                            result.steps, result.simulated_time, result.wall_seconds, opts.out_dir);
@@ -110,6 +135,11 @@ int execute(bool run_requested, const std::string& case_path, const std::vector<
         if (root)
             fmt::print(stderr, "sluice: error: the run failed: {}\n", e.what());
         return kExitRunError;
+    } catch (const sluice::InternalError& e) {
+        // Also raised on every rank together: nobody is left waiting, no abort needed.
+        if (root)
+            fmt::print(stderr, "sluice: error: the run failed: {}\n", e.what());
+        return kExitFailure;
     } catch (const std::exception& e) {
         fmt::print(stderr, "sluice: error: {}{}\n",
                    world.parallel() ? fmt::format("rank {}: ", world.rank()) : std::string(),
@@ -138,23 +168,35 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", version_string());
     app.require_subcommand(1);
 
-    std::string case_path, out_dir;
+    std::string case_path;
     std::vector<std::string> sets;
-    int threads = 0;
-    bool quiet = false, verbose = false;
-    std::string trace;
+    RunFlags flags;
 
     CLI::App* run = app.add_subcommand("run", "Run a case to its end time");
     add_case_options(run, case_path, sets);
-    run->add_option("--out", out_dir, "Results folder (default: results/<case name>)");
-    run->add_option("--threads", threads, "Worker threads (0 = all hardware threads)")
+    auto* out_option =
+        run->add_option("--out", flags.out_dir, "Results folder (default: results/<case name>)");
+    run->add_option("--restart", flags.restart,
+                    "Continue the run whose results folder is DIR from DIR/checkpoint.h5, "
+                    "writing on into DIR")
+        ->type_name("DIR")
+        ->excludes(out_option);
+    run->add_option("--threads", flags.threads, "Worker threads (0 = all hardware threads)")
         ->check(CLI::Range(0, 65536));
-    run->add_option("--trace", trace,
+    run->add_option("--debug-fail-rank", flags.debug_fail_rank,
+                    "Debug: make a task of this rank throw (with --debug-fail-step)")
+        ->check(CLI::Range(0, 1 << 24))
+        ->group("Debug");
+    run->add_option("--debug-fail-step", flags.debug_fail_step,
+                    "Debug: the step (from 1) in which that task throws")
+        ->check(CLI::Range(1L, 1L << 40))
+        ->group("Debug");
+    run->add_option("--trace", flags.trace,
                     "Write a Chrome/Perfetto trace of every task and message (JSON; open in "
                     "ui.perfetto.dev or chrome://tracing)")
         ->type_name("FILE.json");
-    auto* quiet_flag = run->add_flag("--quiet,-q", quiet, "No progress output");
-    run->add_flag("--verbose,-v", verbose, "Detailed log")->excludes(quiet_flag);
+    auto* quiet_flag = run->add_flag("--quiet,-q", flags.quiet, "No progress output");
+    run->add_flag("--verbose,-v", flags.verbose, "Detailed log")->excludes(quiet_flag);
 
     CLI::App* info = app.add_subcommand("info", "Describe a case without running it");
     add_case_options(info, case_path, sets);
@@ -168,8 +210,7 @@ int main(int argc, char** argv) {
 
     // Join oneTBB's worker threads before exit (sanitizers otherwise report their state).
     tbb::task_scheduler_handle workers{tbb::attach{}};
-    const int code =
-        execute(run->parsed(), case_path, sets, out_dir, threads, quiet, verbose, trace);
+    const int code = execute(run->parsed(), case_path, sets, flags);
     if (sluice::tasks::Comm::world().parallel())
         // oneTBB 2021.8 can wait forever in finalize() for a worker that an arena fed from
         // outside (the MPI main thread) left asleep; the workers die with the process anyway.

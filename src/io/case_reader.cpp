@@ -4,6 +4,8 @@
 
 #include "sluice/io/errors.hpp"
 
+#include "case_fingerprint.hpp"
+
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -31,7 +33,7 @@ namespace {
 const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"",
      {"case", "domain", "fluid", "particles", "blocks", "numerics", "walls", "time", "output",
-      "probes", "runtime", "neighbours"}},
+      "probes", "runtime", "neighbours", "checkpoint", "limits"}},
     {"case", {"name", "description", "dimension"}},
     {"domain", {"lo", "hi", "periodic"}},
     {"fluid",
@@ -60,6 +62,8 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"runtime",
      {"particles_per_group", "rebalance_threshold", "rebalance_window", "rebalance_every",
       "balance_cost", "initial_decomposition"}},
+    {"checkpoint", {"every_steps", "every_minutes"}},
+    {"limits", {"max_speed", "min_density", "max_density"}},
 };
 const std::set<std::string, std::less<>> kArrayTables = {"blocks", "probes", "walls.planes",
                                                          "walls.boxes"};
@@ -1028,6 +1032,29 @@ void read_neighbours(const Section& s, CaseConfig& c) {
     c.neighbours.free_surface = read_neighbour_selection(s.sub("free_surface"));
 }
 
+void read_checkpoint_table(const Section& s, CaseConfig& c) {
+    const auto steps = s.integer("every_steps").value_or(0);
+    s.require(steps >= 0 && steps <= 1000000000, "every_steps",
+              fmt::format("must be between 0 (off) and 1000000000 steps, got {}", steps));
+    c.checkpoint_every_steps = static_cast<int>(steps);
+    c.checkpoint_every_minutes = s.number("every_minutes", 30);
+    s.require(
+        c.checkpoint_every_minutes >= 0 && c.checkpoint_every_minutes <= 1e6, "every_minutes",
+        fmt::format("must be between 0 (off) and 1e6 minutes, got {}", c.checkpoint_every_minutes));
+}
+
+// Bounds of a healthy fluid state; beyond them the run stops as blown up.
+void read_limits(const Section& s, CaseConfig& c) {
+    c.max_speed = s.number("max_speed", c.sound_speed);
+    s.require(c.max_speed > 0, "max_speed", fmt::format("must be > 0, got {}", c.max_speed));
+    c.min_density = s.number("min_density", 0.01 * c.rho0);
+    c.max_density = s.number("max_density", 2 * c.rho0);
+    s.require(c.min_density >= 0 && c.min_density < c.rho0, "min_density",
+              fmt::format("must be >= 0 and below fluid.rho0 = {}, got {}", c.rho0, c.min_density));
+    s.require(c.max_density > c.rho0, "max_density",
+              fmt::format("must be above fluid.rho0 = {}, got {}", c.rho0, c.max_density));
+}
+
 // Lattice sites of all blocks; refuses cases that would not fit any sensible machine.
 void check_particle_count(const Section& root, const CaseConfig& c) {
     double total = 0;
@@ -1070,6 +1097,8 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
     read_probes(top, c);
     read_runtime(top.sub("runtime"), c);
     read_neighbours(top.sub("neighbours"), c);
+    read_checkpoint_table(top.sub("checkpoint"), c);
+    read_limits(top.sub("limits"), c);
     check_particle_count(top, c);
     return c;
 }
@@ -1081,7 +1110,9 @@ CaseConfig read_case(const std::string& path, const std::vector<std::string>& ov
     toml::table root = parse_case_file(path);
     for (const auto& o : overrides)
         apply_override(root, o, r);
-    return build(root, r, path);
+    CaseConfig c = build(root, r, path);
+    c.fingerprint = case_fingerprint(root);
+    return c;
 }
 
 } // namespace sluice

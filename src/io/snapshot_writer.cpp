@@ -3,14 +3,7 @@
 
 #include <fmt/format.h>
 
-// With the parallel (OpenMPI) HDF5 build, <hdf5.h> includes <mpi.h>: the target compiling this
-// file needs MPI's include directories (sluice_core links MPI::MPI_C for that). Fail with
-// that advice rather than "mpi.h: not found" if it is ever lost.
-#include <H5pubconf.h>
-#if defined(H5_HAVE_PARALLEL) && !__has_include(<mpi.h>)
-#error "parallel HDF5 needs <mpi.h>: link sluice_core to MPI::MPI_C in CMakeLists.txt"
-#endif
-#include <hdf5.h>
+#include "hdf5_util.hpp"
 
 #include <algorithm>
 #include <array>
@@ -18,10 +11,14 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace sluice {
 namespace fs = std::filesystem;
+using h5::check;
+using h5::Handle;
+using h5::write_attribute;
 
 namespace {
 
@@ -30,28 +27,6 @@ const std::vector<std::string> kKnownFields = {"position",     "velocity", "dens
 
 bool is_vector_field(const std::string& f) {
     return f == "position" || f == "velocity" || f == "acceleration";
-}
-
-// Closes an HDF5 handle on scope exit, so a failed write leaks nothing.
-class Handle {
-public:
-    Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-        if (id_ < 0)
-            throw std::runtime_error("HDF5: cannot " + what);
-    }
-    Handle(const Handle&) = delete;
-    Handle& operator=(const Handle&) = delete;
-    ~Handle() { close_(id_); }
-    [[nodiscard]] hid_t get() const { return id_; }
-
-private:
-    hid_t id_;
-    herr_t (*close_)(hid_t);
-};
-
-void check(herr_t status, const std::string& what) {
-    if (status < 0)
-        throw std::runtime_error("HDF5: cannot " + what);
 }
 
 // Writes `data` (row-major, cols values per particle) as dataset `name` of
@@ -72,14 +47,6 @@ void write_dataset(hid_t file, const std::string& name, const std::vector<T>& da
     if (n > 0)
         check(H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
               "write dataset " + name);
-}
-
-template <class T>
-void write_attribute(hid_t file, const char* name, T value, hid_t mem_type, hid_t file_type) {
-    const Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar dataspace");
-    const Handle attr(H5Acreate2(file, name, file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                      H5Aclose, std::string("create attribute ") + name);
-    check(H5Awrite(attr.get(), mem_type, &value), std::string("write attribute ") + name);
 }
 
 // N x 3 copy of a D-vector field; 2-D gets z = 0 so every viewer sees 3-D
@@ -115,6 +82,35 @@ void replace_file(const fs::path& tmp, const fs::path& final_path) {
 template <int D>
 SnapshotWriter<D>::SnapshotWriter(std::string out_dir, std::vector<std::string> fields)
     : out_dir_(std::move(out_dir)), xmf_path_((fs::path(out_dir_) / "snapshots.xmf").string()) {
+    init_fields(std::move(fields));
+    // An earlier run's files would otherwise sit beside this run's, or be listed
+    // by the .xmf.
+    remove_from(0);
+    fs::remove(xmf_path_);
+}
+
+template <int D>
+SnapshotWriter<D>::SnapshotWriter(std::string out_dir, std::vector<std::string> fields,
+                                  const std::vector<Earlier>& earlier)
+    : out_dir_(std::move(out_dir)), xmf_path_((fs::path(out_dir_) / "snapshots.xmf").string()) {
+    init_fields(std::move(fields));
+    for (std::size_t k = 0; k < earlier.size(); ++k) {
+        const std::string rel = relative_path(k);
+        if (!fs::exists(fs::path(out_dir_) / rel))
+            throw std::runtime_error(
+                fmt::format("cannot continue the snapshot series: {} is missing",
+                            (fs::path(out_dir_) / rel).string()));
+        written_.push_back({rel, earlier[k].time, earlier[k].particles});
+    }
+    remove_from(earlier.size());
+    if (written_.empty())
+        fs::remove(xmf_path_);
+    else
+        write_xmf();
+}
+
+template <int D>
+void SnapshotWriter<D>::init_fields(std::vector<std::string> fields) {
     fields_.emplace_back("position");
     for (auto& f : fields) {
         if (std::find(kKnownFields.begin(), kKnownFields.end(), f) == kKnownFields.end())
@@ -122,16 +118,45 @@ SnapshotWriter<D>::SnapshotWriter(std::string out_dir, std::vector<std::string> 
         if (std::find(fields_.begin(), fields_.end(), f) == fields_.end())
             fields_.push_back(std::move(f));
     }
-    const fs::path dir = fs::path(out_dir_) / "snapshots";
-    fs::create_directories(dir);
-    // An earlier run's files would otherwise sit beside this run's, or be listed
-    // by the .xmf.
-    for (const auto& entry : fs::directory_iterator(dir)) {
+    fs::create_directories(fs::path(out_dir_) / "snapshots");
+}
+
+template <int D>
+void SnapshotWriter<D>::remove_from(std::size_t keep) const {
+    fs::remove(fs::path(out_dir_) / ".snapshots.xmf.tmp"); // from an interrupted write
+    for (const auto& entry : fs::directory_iterator(fs::path(out_dir_) / "snapshots")) {
         const std::string name = entry.path().filename().string();
-        if (name.starts_with("snap_") || name.starts_with(".snap_"))
+        if (name.starts_with(".snap_")) {
+            fs::remove(entry.path());
+            continue;
+        }
+        // snap_NNNNNN.h5: numbered from 0 in the order written.
+        if (!name.starts_with("snap_"))
+            continue;
+        std::size_t index = 0;
+        const auto digits = name.substr(
+            5, name.find('.') == std::string::npos ? std::string::npos : name.find('.') - 5);
+        const bool numbered =
+            !digits.empty() && digits.size() <= 18 &&
+            std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+        if (numbered)
+            index = std::stoull(digits);
+        if (!numbered || index >= keep)
             fs::remove(entry.path());
     }
-    fs::remove(xmf_path_);
+}
+
+template <int D>
+std::string SnapshotWriter<D>::relative_path(std::size_t index) {
+    return fmt::format("snapshots/snap_{:06d}.h5", index);
+}
+
+template <int D>
+std::vector<typename SnapshotWriter<D>::Earlier> SnapshotWriter<D>::written() const {
+    std::vector<Earlier> out;
+    for (const auto& w : written_)
+        out.push_back({w.time, w.particles});
+    return out;
 }
 
 template <int D>
@@ -183,7 +208,7 @@ void SnapshotWriter<D>::write_h5(const std::string& path, const Particles<D>& ps
 
 template <int D>
 std::string SnapshotWriter<D>::write(const Particles<D>& ps, double time, long step) {
-    const std::string rel = fmt::format("snapshots/snap_{:06d}.h5", written_.size());
+    const std::string rel = relative_path(written_.size());
     const fs::path final_path = fs::path(out_dir_) / rel;
     const fs::path tmp =
         fs::path(out_dir_) / fmt::format("snapshots/.snap_{:06d}.h5.tmp", written_.size());

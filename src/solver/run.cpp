@@ -3,6 +3,7 @@
 #include "sluice/solver/run.hpp"
 
 #include "sluice/core/neighbour_census.hpp"
+#include "sluice/io/checkpoint.hpp"
 #include "sluice/io/errors.hpp"
 #include "sluice/io/probe_writer.hpp"
 #include "sluice/io/progress.hpp"
@@ -12,11 +13,14 @@
 #include "sluice/physics/probes.hpp"
 #include "sluice/solver/simulation.hpp"
 
+#include "stop_signals.hpp"
+
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
@@ -160,6 +164,37 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
     return out;
 }
 
+// The results folder a restart continues must still hold what the checkpoint says was written
+// (every rank checks, so all refuse together).
+void check_restart_folder(const CaseConfig& cfg, const std::string& out_dir,
+                          const OutputState& out) {
+    namespace fs = std::filesystem;
+    const std::string ckpt = checkpoint_path(out_dir);
+    if (out.probe_next.size() != cfg.probes.size())
+        throw CaseError(ckpt, "",
+                        fmt::format("cannot continue: it records {} probes, the case has {}",
+                                    out.probe_next.size(), cfg.probes.size()));
+    if (cfg.snapshots)
+        for (std::size_t k = 0; k < out.snapshot_time.size(); ++k) {
+            const fs::path snap = fs::path(out_dir) / SnapshotWriter<2>::relative_path(k);
+            if (!fs::is_regular_file(snap))
+                throw CaseError(ckpt, "",
+                                fmt::format("cannot continue: snapshot {} of the run it records "
+                                            "is missing",
+                                            snap.string()));
+        }
+    for (std::size_t k = 0; k < cfg.probes.size(); ++k) {
+        const fs::path csv = fs::path(out_dir) / "probes" / (cfg.probes[k].name + ".csv");
+        std::error_code ec;
+        const auto size = fs::file_size(csv, ec);
+        if (ec || size < out.probe_bytes[k])
+            throw CaseError(ckpt, "",
+                            fmt::format("cannot continue: probe file {} is missing or shorter "
+                                        "than when the checkpoint was written",
+                                        csv.string()));
+    }
+}
+
 template <int D>
 RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     namespace fs = std::filesystem;
@@ -168,17 +203,43 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     so.threads = threads;
     so.trace = !opts.trace_path.empty();
     so.log_rebalances = !opts.quiet;
-    Simulation<D> sim(cfg, so); // refuses an unrunnable case before anything is written
+    so.debug_fail_rank = opts.debug_fail_rank;
+    so.debug_fail_step = opts.debug_fail_step;
+    // A restart: every rank reads the whole checkpoint (and keeps its part of the particles).
+    const bool resumed = !opts.restart_dir.empty();
+    std::optional<Checkpoint<D>> resume;
+    if (resumed) {
+        resume = read_checkpoint<D>(checkpoint_path(opts.restart_dir), cfg.fingerprint);
+        check_restart_folder(cfg, opts.out_dir, resume->output);
+    }
+    // Refuses an unrunnable case before anything is written.
+    Simulation<D> sim(cfg, so, resume ? &*resume : nullptr);
     const bool root = sim.comm().rank() == 0;
+    const OutputState start = resume ? resume->output : OutputState{};
+    const long start_step = sim.steps();
+    resume.reset();
 
+    const fs::path stop_file = fs::path(opts.out_dir) / "stop";
+    const std::string checkpoint_file = checkpoint_path(opts.out_dir);
     std::unique_ptr<SnapshotWriter<D>> snapshots;
     std::unique_ptr<ProbeWriter> probe_files;
     if (root) {
         fs::create_directories(opts.out_dir);
         fs::remove(fs::path(opts.out_dir) / "summary.json"); // an old summary would look complete
+        fs::remove(stop_file);                               // it stopped an earlier run
+        if (!resumed)
+            fs::remove(checkpoint_file); // an earlier run's: its snapshots are going
+        discard_partial_checkpoint(checkpoint_file);
+        std::vector<typename SnapshotWriter<D>::Earlier> earlier;
+        for (std::size_t k = 0; k < start.snapshot_time.size(); ++k)
+            earlier.push_back({start.snapshot_time[k], start.snapshot_particles[k]});
         if (cfg.snapshots)
-            snapshots = std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
-        probe_files = std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes);
+            snapshots = resumed
+                            ? std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields, earlier)
+                            : std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
+        probe_files =
+            resumed ? std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes, start.probe_bytes)
+                    : std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes);
     }
 
     const double out_every = cfg.output_interval > 0 ? cfg.output_interval : cfg.end_time;
@@ -189,6 +250,11 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     }
     double out_next = 0.0;
     double last_output_time = -1;
+    if (resumed) {
+        probe_next = start.probe_next;
+        out_next = start.out_next;
+        last_output_time = start.last_output_time;
+    }
     // Every rank takes the same decisions (same time); the particles are gathered on rank 0
     // only when something is due.
     auto sample = [&](bool force) {
@@ -238,27 +304,101 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         total_particles = std::stoull(s);
     }
 
+    // Collective: every rank's particles to rank 0, which writes the checkpoint.
+    auto write_checkpoint_now = [&] {
+        Checkpoint<D> c;
+        c.particles = sim.gather_particles();
+        if (!root)
+            return;
+        c.case_fingerprint = cfg.fingerprint;
+        c.ranks = sim.comm().size();
+        c.solver = sim.solver_state();
+        c.output.out_next = out_next;
+        c.output.last_output_time = last_output_time;
+        c.output.probe_next = probe_next;
+        c.output.probe_bytes = probe_files->bytes();
+        if (snapshots)
+            for (const auto& w : snapshots->written()) {
+                c.output.snapshot_time.push_back(w.time);
+                c.output.snapshot_particles.push_back(w.particles);
+            }
+        write_checkpoint(checkpoint_file, c);
+    };
+    // After a failed step every rank holds the state before it: write it for inspection.
+    auto last_snapshot = [&](const std::string& label) {
+        const Particles<D> all = sim.gather_particles();
+        if (!root)
+            return std::string();
+        if (!snapshots) // snapshots are off: this one is written all the same
+            snapshots = std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
+        return fmt::format(", {} in {}", label, snapshots->write(all, sim.time(), sim.steps()));
+    };
+
     Progress progress(cfg.end_time, opts.quiet || !root);
     const auto t0 = Clock::now();
+    const StopSignals signals;
+    auto last_checkpoint = Clock::now(), last_stop_check = Clock::now();
+    bool stop_file_seen = false;
     sample(false);
     while (sim.time() < cfg.end_time * (1 - 1e-12)) {
+        // Requests go into the next step's reduction, so every rank acts on them together.
+        if (StopSignals::received() != 0)
+            sim.post_request(request_stop);
+        if (root) {
+            const auto now = Clock::now();
+            if (now - last_stop_check >= std::chrono::milliseconds(200)) { // few stat calls
+                last_stop_check = now;
+                stop_file_seen = fs::exists(stop_file);
+            }
+            if (stop_file_seen)
+                sim.post_request(request_stop);
+            if (cfg.checkpoint_every_minutes > 0 &&
+                std::chrono::duration<double>(now - last_checkpoint).count() >=
+                    60 * cfg.checkpoint_every_minutes)
+                sim.post_request(request_checkpoint);
+        }
         try {
             sim.step();
         } catch (const RunError& e) {
             // Every rank got the error from the same step; the state is the last good one
             // (the failing step never swapped its buffers in).
-            std::string where;
-            const Particles<D> all = sim.gather_particles();
-            if (snapshots)
-                where = ", last good state in " + snapshots->write(all, sim.time(), sim.steps());
+            const std::string where = last_snapshot("last good state");
             progress.finish();
             throw RunError(std::string(e.what()) + where);
+        } catch (const InternalError& e) {
+            const std::string where = last_snapshot("state before the failing step");
+            progress.finish();
+            throw InternalError(std::string(e.what()) + where);
         }
         const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
         progress.update(sim.steps(), sim.time(), sim.dt(),
-                        static_cast<double>(total_particles) * static_cast<double>(sim.steps()) /
-                            wall);
+                        static_cast<double>(total_particles) *
+                            static_cast<double>(sim.steps() - start_step) / wall);
         sample(false);
+        const unsigned requests = sim.agreed_requests();
+        const bool stop = (requests & request_stop) != 0;
+        if (stop || (requests & request_checkpoint) != 0 ||
+            (cfg.checkpoint_every_steps > 0 && sim.steps() % cfg.checkpoint_every_steps == 0)) {
+            write_checkpoint_now();
+            last_checkpoint = Clock::now();
+        }
+        if (stop) {
+            progress.finish();
+            if (root) {
+                fs::remove(stop_file);
+                const char* why = StopSignals::received() == SIGTERM  ? "SIGTERM"
+                                  : StopSignals::received() == SIGINT ? "SIGINT"
+                                  : stop_file_seen                    ? "the stop file"
+                                                                      : "a signal to another rank";
+                result.stop_reason = why;
+            }
+            result.stopped = true;
+            result.steps = sim.steps();
+            result.simulated_time = sim.time();
+            result.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+            result.checkpoint = checkpoint_file;
+            return result;
+        }
     }
     if (sim.time() != last_output_time)
         sample(true);
@@ -268,7 +408,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.steps = sim.steps();
     result.simulated_time = sim.time();
     result.particle_steps_per_second = static_cast<double>(total_particles) *
-                                       static_cast<double>(result.steps) / result.wall_seconds;
+                                       static_cast<double>(result.steps - start_step) /
+                                       result.wall_seconds;
     NeighbourCensus census_end;
     {
         const Particles<D> all = sim.gather_particles();
@@ -304,6 +445,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     extra["cell_groups"] = graph.group_count();
     extra["decompositions"] = sim.decompositions();
     extra["last_dt"] = sim.dt();
+    if (resumed)
+        extra["restarted_from_step"] = start_step;
     extra["parallel"] = parallel;
     extra["neighbours"] = {{"support", support},
                            {"start", census_json(census_start)},

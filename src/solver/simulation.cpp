@@ -63,7 +63,8 @@ Simulation<D>::~Simulation() {
 }
 
 template <int D>
-Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts)
+Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
+                          const Checkpoint<D>* resume)
     : cfg_(cfg), kernel_(make_kernel<D>(cfg.kernel, cfg.h_over_dx * cfg.dx)),
       opts_(std::move(opts)), comm_(tasks::Comm::world()) {
     h_ = cfg.h_over_dx * cfg.dx;
@@ -93,13 +94,21 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts)
         add_wall_particles<D>(cfg, layers, P_);
     // A fluid particle may sit inside the dummy-wall layers for a moment; it has escaped only
     // once it is behind all of them.
-    escape_margin_ = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
+    const double escape_margin = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
     for (std::size_t i = 0; i < P_.size(); ++i)
         P_.p[i] = eos_.pressure(P_.rho[i]);
 
     // The grid covers the domain; open axes get room for wall layers and one support more.
     domain_lo_ = to_vec<D>(cfg.domain_lo);
     domain_hi_ = to_vec<D>(cfg.domain_hi);
+    for (int d = 0; d < D; ++d) {
+        bounds_.lo[d] = domain_lo_[d] - escape_margin;
+        bounds_.hi[d] = domain_hi_[d] + escape_margin;
+        bounds_.periodic[static_cast<std::size_t>(d)] = cfg.periodic[static_cast<std::size_t>(d)];
+    }
+    bounds_.max_speed = cfg.max_speed;
+    bounds_.min_density = cfg.min_density;
+    bounds_.max_density = cfg.max_density;
     Vec<D> lo = domain_lo_, hi = domain_hi_;
     std::array<bool, D> periodic{};
     for (int d = 0; d < D; ++d) {
@@ -132,6 +141,18 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts)
     limits_ = rest;
     for (std::size_t i = 0; i < P_.size(); ++i)
         u_max_ = std::max(u_max_, P_.v[i].norm());
+    if (resume != nullptr) {
+        // The case was checked above on its initial state, exactly as when the checkpoint's run
+        // started; from here on the checkpoint's state replaces it.
+        P_ = resume->particles;
+        const SolverState& st = resume->solver;
+        time_ = st.time;
+        steps_ = static_cast<long>(st.step);
+        dt_ = st.dt;
+        dt_prev_ = st.dt_prev;
+        u_max_ = st.u_max;
+        limits_ = TimeStepLimits{st.limit_acoustic, st.limit_viscous, st.limit_force};
+    }
 
     // Worker threads of this rank. On several ranks the main thread drives MPI and the
     // arena gets one slot more for it (run_case raises TBB's global limit to match).
@@ -546,6 +567,11 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                     P_.v_half[i] = kick<D>(P_.v_half[i], P_.a[i], dt_prev_, dt_);
         break;
     case StageKind::drift: {
+        if (steps_ + 1 == opts_.debug_fail_step && comm_.rank() == opts_.debug_fail_rank &&
+            group == 0)
+            throw std::runtime_error(fmt::format("deliberate failure of rank {} in step {} "
+                                                 "(--debug-fail-rank/--debug-fail-step)",
+                                                 comm_.rank(), steps_ + 1));
         TimeStepLimits lim;
         Real speed = 0;
         std::string failure;
@@ -575,15 +601,8 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                                                   P_.a[i].norm()));
                 speed = std::max(speed, v.norm());
                 if (failure.empty()) {
-                    bool bad = !std::isfinite(rho) || rho <= 0 || !x.allFinite() || !v.allFinite();
-                    const char* what = "a non-finite or non-positive state";
-                    for (int d = 0; d < D && !bad; ++d)
-                        if (!grid_.periodic[d] && (x[d] < domain_lo_[d] - escape_margin_ ||
-                                                   x[d] > domain_hi_[d] + escape_margin_)) {
-                            bad = true;
-                            what = "a position outside the domain";
-                        }
-                    if (bad)
+                    const std::string what = state_fault(bounds_, x, v, rho);
+                    if (!what.empty())
                         failure = fmt::format(
                             "particle {} reached {} at step {}, t = {:.6g} s: x = [{}], v = [{}], "
                             "rho = {:.6g}",
@@ -604,7 +623,14 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
 template <int D>
 void Simulation<D>::step() {
     graph_->inject_receive_delay(receive_delay_);
-    graph_->run();
+    std::string task_error;
+    try {
+        // A throwing task does not stop the graph: its messages still go out, so every rank
+        // completes the step and learns of the error in the reduction below.
+        graph_->run();
+    } catch (const std::exception& e) {
+        task_error = e.what();
+    }
     const double t_graph = tasks::clock_seconds();
     // The stage layout is fixed for a case, so totals carry over when the graph is rebuilt.
     stage_busy_.resize(static_cast<std::size_t>(graph_->stage_count()), 0.0);
@@ -624,7 +650,7 @@ void Simulation<D>::step() {
     }
     between_.clear();
 
-    reduce_step_results(); // throws RunError on every rank if a particle failed on any
+    reduce_step_results(task_error); // throws on every rank if anything failed on any
     P_.swap_buffers();
     P_.resize(owned_); // drop the halo copies: they are received afresh next step
     time_ += dt_;
@@ -641,36 +667,53 @@ void Simulation<D>::step() {
 }
 
 template <int D>
-void Simulation<D>::reduce_step_results() {
+void Simulation<D>::reduce_step_results(const std::string& task_error) {
     TimeStepLimits lim;
     for (const auto& l : group_limits_)
         lim = min(lim, l);
     Real speed = 0;
     for (Real s : group_speed_)
         speed = std::max(speed, s);
-    const std::string* failure = nullptr;
+    // A task that threw comes first: the step's other results may be incomplete.
+    enum : std::int64_t { none = 0, physical = 1, internal = 2 };
+    std::int64_t failed = task_error.empty() ? none : internal;
+    std::string failure =
+        task_error.empty() ? std::string() : fmt::format("step {}: {}", steps_ + 1, task_error);
     for (const std::string& f : group_failure_)
-        if (!f.empty() && failure == nullptr)
-            failure = &f;
+        if (!f.empty() && failed == none) {
+            failed = physical;
+            failure = f;
+        }
     double busy = 0;
     for (const auto& r : graph_->task_records())
         busy += r.end - r.start;
+    const unsigned requests = requests_local_;
+    requests_local_ = 0;
     if (!comm_.parallel()) {
-        if (failure != nullptr)
-            throw RunError(*failure);
+        if (failed == internal)
+            throw InternalError(failure);
+        if (failed == physical)
+            throw RunError(failure);
         limits_ = lim;
         u_max_ = speed;
         last_busy_.assign(1, busy);
+        requests_agreed_ = requests;
         return;
     }
-    // One small all-gather per step: the time-step limits, the largest speed, failures and
-    // the busy time the balancer needs. Every rank reduces the same list the same way.
+    // One small all-gather per step: the time-step limits, the largest speed, failures,
+    // requests (stop, checkpoint) and the busy time the balancer needs. Every rank reduces the
+    // same list the same way.
     struct Report {
         double acoustic, viscous, force, speed, busy;
-        std::int64_t failed;
+        std::int64_t failed, requests;
     };
-    const Report mine{lim.acoustic, lim.viscous, lim.force,
-                      speed,        busy,        failure != nullptr ? 1 : 0};
+    const Report mine{lim.acoustic,
+                      lim.viscous,
+                      lim.force,
+                      speed,
+                      busy,
+                      failed,
+                      static_cast<std::int64_t>(requests)};
     const double t0 = tasks::clock_seconds();
     const auto all = comm_.all_gather(
         std::span<const std::byte>(reinterpret_cast<const std::byte*>(&mine), sizeof(mine)));
@@ -678,6 +721,8 @@ void Simulation<D>::reduce_step_results() {
     TimeStepLimits global;
     Real global_speed = 0;
     int failed_rank = -1;
+    std::int64_t failed_kind = none;
+    std::int64_t agreed = 0;
     last_busy_.assign(all.size(), 0.0);
     for (std::size_t r = 0; r < all.size(); ++r) {
         Report rep{};
@@ -685,16 +730,36 @@ void Simulation<D>::reduce_step_results() {
         global = min(global, TimeStepLimits{rep.acoustic, rep.viscous, rep.force});
         global_speed = std::max(global_speed, rep.speed);
         last_busy_[r] = rep.busy;
-        if (rep.failed != 0 && failed_rank < 0)
+        agreed |= rep.requests;
+        if (rep.failed != none && failed_rank < 0) {
             failed_rank = static_cast<int>(r);
+            failed_kind = rep.failed;
+        }
     }
     if (failed_rank >= 0) {
         const std::string msg =
-            comm_.broadcast(failure != nullptr ? *failure : std::string(), failed_rank);
-        throw RunError(fmt::format("{} (on rank {})", msg, failed_rank));
+            fmt::format("{} (on rank {})", comm_.broadcast(failure, failed_rank), failed_rank);
+        if (failed_kind == internal)
+            throw InternalError(msg);
+        throw RunError(msg);
     }
     limits_ = global;
     u_max_ = global_speed;
+    requests_agreed_ = static_cast<unsigned>(agreed);
+}
+
+template <int D>
+SolverState Simulation<D>::solver_state() const {
+    SolverState s;
+    s.time = time_;
+    s.step = steps_;
+    s.dt = dt_;
+    s.dt_prev = dt_prev_;
+    s.u_max = u_max_;
+    s.limit_acoustic = limits_.acoustic;
+    s.limit_viscous = limits_.viscous;
+    s.limit_force = limits_.force;
+    return s;
 }
 
 template <int D>

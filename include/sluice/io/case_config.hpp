@@ -147,6 +147,22 @@ struct CaseConfig {
     int rebalance_every = 0;
     BalanceCost balance_cost = BalanceCost::time;
     InitialDecomposition initial_decomposition = InitialDecomposition::balanced;
+
+    // [checkpoint]: <results>/checkpoint.h5 every N steps and/or every M minutes of wall time
+    // (0 = off), besides the one written when a run is asked to stop.
+    int checkpoint_every_steps = 0;
+    double checkpoint_every_minutes = 30;
+
+    // [limits]: a fluid particle outside these bounds stops the run (blow-up detection).
+    // Defaults (set by the reader): max_speed = sound_speed, density in [0.01, 2] rho0.
+    double max_speed = 0;   // [m/s]
+    double min_density = 0; // [kg/m^3]
+    double max_density = 0; // [kg/m^3]
+
+    // SHA-256 (hex) of the case content that determines results: the whole file after --set,
+    // except time.end_time, case.description and the [checkpoint], [limits] and [runtime]
+    // tables. A checkpoint continues only a case with the same fingerprint.
+    std::string fingerprint;
 };
 
 } // namespace sluice

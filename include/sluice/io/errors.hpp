@@ -27,4 +27,12 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// An unexpected failure inside a step (a bug, a resource problem) on some rank, which every
+// rank learned of through the step's reduction and raises together: exit code 1, with no rank
+// left waiting and no MPI abort needed.
+class InternalError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 } // namespace sluice

@@ -6,6 +6,7 @@
 // writes "nan". Each row is flushed, so the file is usable while the run goes on.
 #include "sluice/io/case_config.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -23,18 +24,29 @@ public:
     // Throws std::runtime_error when a file cannot be created.
     ProbeWriter(const std::string& out_dir, const std::vector<ProbeConfig>& probes);
 
+    // Continues the files of an interrupted run: each is cut back to its length at the
+    // checkpoint (`bytes[k]`, rows written after it are dropped) and appended to.
+    // Throws std::runtime_error when a file is missing or shorter than that.
+    ProbeWriter(const std::string& out_dir, const std::vector<ProbeConfig>& probes,
+                const std::vector<std::uint64_t>& bytes);
+
     // Appends one row to probe number `index` (in the order given to the constructor).
     void write(std::size_t index, double time, double value);
 
     [[nodiscard]] std::size_t size() const { return files_.size(); }
     [[nodiscard]] const std::string& path(std::size_t index) const { return paths_.at(index); }
+    // Length of each file so far, in bytes (recorded by checkpoints).
+    [[nodiscard]] const std::vector<std::uint64_t>& bytes() const { return bytes_; }
 
 private:
+    void append(std::size_t index, const std::string& text);
+
     struct Close {
         void operator()(std::FILE* f) const { std::fclose(f); }
     };
     std::vector<std::unique_ptr<std::FILE, Close>> files_;
     std::vector<std::string> paths_;
+    std::vector<std::uint64_t> bytes_;
 };
 
 } // namespace sluice

@@ -26,12 +26,28 @@ public:
     // Throws std::invalid_argument for a field name outside the list above.
     SnapshotWriter(std::string out_dir, std::vector<std::string> fields);
 
+    // One snapshot already on disk, as a restarted run continues the series.
+    struct Earlier {
+        double time;
+        std::size_t particles;
+    };
+    // Continues the series of an interrupted run: snap_000000.h5 ... of `earlier` are kept
+    // (they must exist), later ones (written after the checkpoint) are removed, and the .xmf is
+    // rewritten to list exactly `earlier`.
+    SnapshotWriter(std::string out_dir, std::vector<std::string> fields,
+                   const std::vector<Earlier>& earlier);
+
+    // Path of snapshot number `index`, relative to the results folder.
+    [[nodiscard]] static std::string relative_path(std::size_t index);
+
     // Writes the next snapshot and rewrites the .xmf; returns the path of the .h5 written.
     // Throws std::runtime_error when a file cannot be written.
     std::string write(const Particles<D>& particles, double time, long step);
 
     [[nodiscard]] std::size_t count() const { return written_.size(); }
     [[nodiscard]] const std::string& xmf_path() const { return xmf_path_; }
+    // The snapshots written so far (time and particle count), for a checkpoint.
+    [[nodiscard]] std::vector<Earlier> written() const;
 
 private:
     struct Written {
@@ -43,6 +59,9 @@ private:
     void write_h5(const std::string& path, const Particles<D>& particles, double time,
                   long step) const;
     void write_xmf() const;
+    void init_fields(std::vector<std::string> fields);
+    // Removes snapshot files numbered `keep` and above, and temporary ones.
+    void remove_from(std::size_t keep) const;
 
     std::string out_dir_, xmf_path_;
     std::vector<std::string> fields_; // position first, no duplicates

@@ -14,6 +14,11 @@ struct RunOptions {
     bool quiet = false;  // no progress output
     bool verbose = false;
     std::string trace_path; // --trace: Chrome/Perfetto trace of every task and message
+    // --restart: continue from <restart_dir>/checkpoint.h5 (out_dir must be the same folder).
+    std::string restart_dir;
+    // --debug-fail-rank/--debug-fail-step: a task of that rank throws in that step (-1: never).
+    int debug_fail_rank = -1;
+    long debug_fail_step = -1;
 };
 
 struct RunResult {
@@ -24,6 +29,10 @@ struct RunResult {
     std::size_t fluid_particles = 0;
     double particle_steps_per_second = 0;
     double mass_initial = 0, mass_final = 0;
+    // Stopped early on request (signal or stop file) after writing `checkpoint`.
+    bool stopped = false;
+    std::string stop_reason; // rank 0: "SIGTERM", "SIGINT", "the stop file", ...
+    std::string checkpoint;
 };
 
 // What `sluice info` prints: derived without running a step.
@@ -41,10 +50,13 @@ struct CaseInfo {
 
 CaseInfo describe_case(const CaseConfig& cfg);
 
-// Runs the case to its end time; on several MPI ranks every rank calls it (collective) and
-// rank 0 writes all output. Throws sluice::RunError on a physical failure (NaN,
-// blow-up) after writing a last snapshot; throws sluice::CaseError for a case the solver
-// refuses (e.g. a fixed dt above the stability limit).
+// Runs the case to its end time, or from a checkpoint on (opts.restart_dir); on several MPI
+// ranks every rank calls it (collective) and rank 0 writes all output. Writes checkpoints as
+// the case's [checkpoint] table says, and on SIGTERM/SIGINT or a file <out_dir>/stop writes one
+// and returns early with `stopped` set. Throws sluice::RunError on a physical failure (NaN,
+// blow-up) and sluice::InternalError when a task threw, both after writing a last snapshot;
+// throws sluice::CaseError for a case the solver refuses (e.g. a fixed dt above the stability
+// limit) or a checkpoint that cannot continue it.
 RunResult run_case(const CaseConfig& cfg, const RunOptions& opts);
 
 } // namespace sluice

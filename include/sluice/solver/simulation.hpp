@@ -6,6 +6,7 @@
 #include "sluice/core/particles.hpp"
 #include "sluice/core/rebin.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/io/checkpoint.hpp"
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/eos.hpp"
 #include "sluice/physics/kernels.hpp"
@@ -13,6 +14,7 @@
 #include "sluice/physics/timestep.hpp"
 #include "sluice/physics/walls.hpp"
 #include "sluice/solver/halo_fields.hpp"
+#include "sluice/solver/state_check.hpp"
 #include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
 #include "sluice/tasks/profile.hpp"
@@ -33,6 +35,17 @@ struct SimulationOptions {
     bool trace = false; // record every task and message for --trace
     std::size_t trace_max_events = 4000000;
     bool log_rebalances = false; // print each rebalance on rank 0
+    // Debug (--debug-fail-rank/--debug-fail-step): a task of this rank throws in this step, to
+    // test that one rank's failure brings every rank down with its message. -1 = never.
+    int debug_fail_rank = -1;
+    long debug_fail_step = -1;
+};
+
+// Requests a rank can make between steps; every rank sees the union over all ranks after the
+// next step (they travel in the step's all-gather), so all act on them at the same step.
+enum StepRequest : unsigned {
+    request_stop = 1u,       // write a checkpoint and stop (signal or stop file)
+    request_checkpoint = 2u, // write a checkpoint (wall-clock interval, decided by rank 0)
 };
 
 // One rebalance of the cut points between ranks (logged and written into summary.json).
@@ -56,12 +69,24 @@ struct BalanceSample {
 template <int D>
 class Simulation {
 public:
-    // Collective.
-    explicit Simulation(const CaseConfig& cfg, SimulationOptions opts = {});
+    // Collective. With `resume`, the state is the checkpoint's (every rank passes the same one,
+    // holding all particles; each keeps its part) instead of the case's initial state.
+    explicit Simulation(const CaseConfig& cfg, SimulationOptions opts = {},
+                        const Checkpoint<D>* resume = nullptr);
     ~Simulation();
 
-    // Advances one time step. Collective.
+    // Advances one time step. Collective. Throws RunError (a particle left the healthy range)
+    // or InternalError (a task threw) on every rank together, before the failing step's state
+    // is swapped in.
     void step();
+
+    // Everything but the particles that a checkpoint needs to continue bitwise.
+    [[nodiscard]] SolverState solver_state() const;
+
+    // Adds StepRequest flags to this rank's report of the next step.
+    void post_request(unsigned flags) { requests_local_ |= flags; }
+    // Union of the flags every rank posted before the last step.
+    [[nodiscard]] unsigned agreed_requests() const { return requests_agreed_; }
 
     [[nodiscard]] double time() const { return time_; }
     [[nodiscard]] long steps() const { return steps_; }
@@ -113,7 +138,7 @@ private:
     bool maybe_rebalance(const std::vector<double>& busy_per_rank);
     void plan_halo();
     [[nodiscard]] std::vector<std::vector<int>> boundary_groups() const;
-    void reduce_step_results();
+    void reduce_step_results(const std::string& task_error);
     void build_graph();
     void run_stage(int stage, int group);
     template <class K>
@@ -132,7 +157,7 @@ private:
     TimeStepParams ts_params_;
     std::vector<Plane<D>> planes_;
     Vec<D> domain_lo_, domain_hi_;
-    double escape_margin_ = 0;
+    StateBounds<D> bounds_; // healthy range of a fluid particle's state
     double h_ = 0;
     bool continuity_ = false;
     double delta_h_c0_ = 0; // delta-SPH coefficient times h c0
@@ -173,6 +198,7 @@ private:
     tasks::RankProfile profile_;
     std::unique_ptr<tasks::TraceRecorder> trace_;
     double receive_delay_ = 0;
+    unsigned requests_local_ = 0, requests_agreed_ = 0;
 
     // Balancer.
     std::vector<double> group_busy_; // per group, summed since the graph was built

@@ -1,0 +1,48 @@
+#pragma once
+// Blow-up detection: is the new state of a fluid particle healthy? Bounds come from the case
+// ([domain], [limits]); no formula of the method lives here.
+#include "sluice/core/types.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+
+namespace sluice {
+
+template <int D>
+struct StateBounds {
+    Vec<D> lo, hi;                         // the box a particle may occupy (periodic axes excepted)
+    std::array<bool, D> periodic{};        // axes without bounds
+    Real max_speed = 0;                    // [m/s]
+    Real min_density = 0, max_density = 0; // [kg/m^3]
+};
+
+// Empty when the state is healthy; otherwise the quantity that went wrong, in words, e.g.
+// "a speed of 52.1 m/s (limits.max_speed = 40 m/s)".
+template <int D>
+std::string state_fault(const StateBounds<D>& b, const Vec<D>& x, const Vec<D>& v, Real rho) {
+    if (!x.allFinite())
+        return "a non-finite position";
+    if (!v.allFinite())
+        return "a non-finite velocity";
+    if (!std::isfinite(rho))
+        return "a non-finite density";
+    for (int d = 0; d < D; ++d)
+        if (!b.periodic[static_cast<std::size_t>(d)] && (x[d] < b.lo[d] || x[d] > b.hi[d]))
+            return "a position outside the domain";
+    if (rho <= 0)
+        return fmt::format("a non-positive density {:.6g} kg/m^3", rho);
+    if (rho < b.min_density || rho > b.max_density)
+        return fmt::format("a density of {:.6g} kg/m^3 (limits.min_density = {:.6g}, "
+                           "limits.max_density = {:.6g})",
+                           rho, b.min_density, b.max_density);
+    const Real speed = v.norm();
+    if (speed > b.max_speed)
+        return fmt::format("a speed of {:.6g} m/s (limits.max_speed = {:.6g} m/s)", speed,
+                           b.max_speed);
+    return {};
+}
+
+} // namespace sluice

@@ -1,0 +1,140 @@
+#!/usr/bin/env bash
+# Checkpoint/restart and faults on one rank, through the real executable:
+#  - a stop file or SIGTERM stops a run with exit code 4 after writing a checkpoint; the run
+#    continued with --restart writes snapshots, .xmf and probe CSVs byte-identical to an
+#    uninterrupted run's;
+#  - checkpoints of another case, of another format version, truncated, or missing are refused
+#    with exit code 2 and the reason;
+#  - a blow-up (speed above limits.max_speed) stops with exit code 3 naming particle, step,
+#    time, position and the quantity, and leaves a last snapshot even with snapshots off;
+#  - a task that throws (--debug-fail-*) stops the run with exit code 1 and its message.
+# Usage: checkpoint_restart.sh <sluice executable> <source dir>
+set -u
+exe=$(realpath "$1")
+src=$(realpath "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+case_file="$src/cases/dam_break_2d.toml"
+sets=(--set particles.dx=0.02 --set time.end_time=0.1 --set time.output_interval=0.025 --quiet)
+
+same_results() { # reference other label
+    local ref=$1 dir=$2 label=$3 n=0 before=$failures
+    for f in "$ref"/snapshots/*.h5; do
+        cmp -s "$f" "$dir/snapshots/$(basename "$f")" || fail "$label: $(basename "$f") differs"
+        n=$((n + 1))
+    done
+    [ "$(ls "$dir"/snapshots/*.h5 | wc -l)" -eq "$n" ] || fail "$label: snapshot count differs"
+    cmp -s "$ref/snapshots.xmf" "$dir/snapshots.xmf" || fail "$label: snapshots.xmf differs"
+    diff -r "$ref/probes" "$dir/probes" >/dev/null || fail "$label: probe CSVs differ"
+    [ -f "$dir/summary.json" ] || fail "$label: no summary.json after the restart"
+    [ $failures -eq "$before" ] &&
+        echo "ok $label: $n snapshots, xmf and probes identical to the uninterrupted run"
+}
+
+# Waits (at most 60 s) for the first checkpoint of a run started in the background.
+wait_checkpoint() {
+    for _ in $(seq 600); do [ -f "$1/checkpoint.h5" ] && return 0; sleep 0.1; done
+    fail "no checkpoint appeared in $1"
+}
+
+"$exe" run "$case_file" --out "$work/ref" "${sets[@]}" --threads 1 || fail "reference run: exit $?"
+[ ! -e "$work/ref/checkpoint.h5" ] || fail "a run without [checkpoint] settings wrote one"
+
+# Stop file: exit 4, a message naming the checkpoint and the command that continues.
+"$exe" run "$case_file" --out "$work/stop" "${sets[@]}" --set checkpoint.every_steps=20 \
+    2>"$work/stop.txt" &
+pid=$!
+wait_checkpoint "$work/stop"
+touch "$work/stop/stop"
+wait $pid
+code=$?
+[ $code -eq 4 ] || fail "stop file: exit code $code, expected 4"
+grep -q "stopped by the stop file after step" "$work/stop.txt" || fail "stop message: $(cat "$work/stop.txt")"
+grep -q -- "--restart $work/stop" "$work/stop.txt" || fail "stop message lacks the restart command"
+[ ! -e "$work/stop/stop" ] || fail "the stop file was left behind"
+[ ! -e "$work/stop/summary.json" ] || fail "a stopped run wrote summary.json"
+"$exe" run "$case_file" --restart "$work/stop" "${sets[@]}" || fail "restart after stop: exit $?"
+grep -q '"restarted_from_step"' "$work/stop/summary.json" || fail "summary lacks restarted_from_step"
+same_results "$work/ref" "$work/stop" "stop file + restart"
+
+# SIGTERM, then a restart with other threads and checkpoint settings (they do not change results).
+"$exe" run "$case_file" --out "$work/term" "${sets[@]}" --set checkpoint.every_steps=25 \
+    2>"$work/term.txt" &
+pid=$!
+wait_checkpoint "$work/term"
+kill -TERM $pid
+wait $pid
+code=$?
+[ $code -eq 4 ] || fail "SIGTERM: exit code $code, expected 4"
+grep -q "stopped by SIGTERM" "$work/term.txt" || fail "SIGTERM message: $(cat "$work/term.txt")"
+"$exe" run "$case_file" --restart "$work/term" "${sets[@]}" --threads 2 \
+    --set checkpoint.every_steps=7 || fail "restart after SIGTERM: exit $?"
+same_results "$work/ref" "$work/term" "SIGTERM + restart"
+
+# 3-D: the same through Checkpoint<3>.
+case3="$src/cases/dam_break_3d.toml"
+sets3=(--set time.end_time=0.02 --set time.output_interval=0.005 --quiet)
+"$exe" run "$case3" --out "$work/ref3" "${sets3[@]}" --threads 1 || fail "3-D reference: exit $?"
+"$exe" run "$case3" --out "$work/term3" "${sets3[@]}" --threads 1 \
+    --set checkpoint.every_steps=5 2>/dev/null &
+pid=$!
+wait_checkpoint "$work/term3"
+kill -TERM $pid
+wait $pid
+code=$?
+[ $code -eq 4 ] || fail "3-D SIGTERM: exit code $code, expected 4"
+"$exe" run "$case3" --restart "$work/term3" "${sets3[@]}" --threads 2 || fail "3-D restart: exit $?"
+same_results "$work/ref3" "$work/term3" "3-D SIGTERM + restart"
+
+# Wall-clock cadence: every 0.001 minutes a checkpoint replaces the last; a run that finished
+# leaves its last one, from which the end is reached again with the same results.
+"$exe" run "$case_file" --out "$work/wall" "${sets[@]}" --threads 1 \
+    --set checkpoint.every_minutes=0.001 || fail "every_minutes run: exit $?"
+[ -f "$work/wall/checkpoint.h5" ] || fail "every_minutes wrote no checkpoint"
+"$exe" run "$case_file" --restart "$work/wall" "${sets[@]}" || fail "restart (wall): exit $?"
+same_results "$work/ref" "$work/wall" "every_minutes checkpoint + restart"
+
+# Refusals: exit code 2 and the reason; the folder is not touched.
+refused() { # label expected-text dir args...
+    local label=$1 text=$2 dir=$3
+    shift 3
+    "$exe" run "$case_file" --restart "$dir" "${sets[@]}" "$@" 2>"$work/err.txt"
+    local c=$?
+    [ $c -eq 2 ] || fail "$label: exit code $c, expected 2"
+    grep -q "$text" "$work/err.txt" || fail "$label: message lacks '$text': $(cat "$work/err.txt")"
+}
+cp -r "$work/term" "$work/base"
+refused "another case" "written by another case" "$work/base" --set fluid.sound_speed=30
+refused "no checkpoint" "no such file" "$work/nothing"
+cp -r "$work/base" "$work/cut"
+truncate -s 3000 "$work/cut/checkpoint.h5"
+refused "truncated" "not a readable HDF5 file" "$work/cut"
+cp -r "$work/base" "$work/v2"
+/usr/bin/python3 -c "import h5py, sys; h5py.File(sys.argv[1], 'r+').attrs.modify('format_version', 99)" \
+    "$work/v2/checkpoint.h5" || fail "could not edit the version"
+refused "other version" "format version 99" "$work/v2"
+cmp -s "$work/base/snapshots.xmf" "$work/v2/snapshots.xmf" || fail "a refused restart touched the folder"
+
+# Blow-up: a speed limit far below the collapse's speeds stops the run with exit code 3.
+"$exe" run "$case_file" --out "$work/fast" "${sets[@]}" --set limits.max_speed=0.3 \
+    --set output.snapshots=false 2>"$work/fast.txt"
+code=$?
+[ $code -eq 3 ] || fail "speed limit: exit code $code, expected 3"
+grep -Eq "particle [0-9]+ reached a speed of [0-9.e+-]+ m/s \(limits.max_speed = 0.3 m/s\) at step [0-9]+, t = [0-9.e+-]+ s: x = \[" \
+    "$work/fast.txt" || fail "blow-up message: $(cat "$work/fast.txt")"
+ls "$work/fast/snapshots/"snap_000000.h5 >/dev/null 2>&1 || fail "no last snapshot with snapshots off"
+grep -q "last good state in" "$work/fast.txt" || fail "blow-up message names no snapshot"
+
+# A task that throws: exit code 1 with its message, no hang.
+timeout 60 "$exe" run "$case_file" --out "$work/throw" "${sets[@]}" --debug-fail-rank 0 \
+    --debug-fail-step 3 2>"$work/throw.txt"
+code=$?
+[ $code -eq 1 ] || fail "debug failure: exit code $code, expected 1"
+grep -q "step 3: deliberate failure of rank 0 in step 3" "$work/throw.txt" ||
+    fail "debug failure message: $(cat "$work/throw.txt")"
+
+if [ $failures -eq 0 ]; then echo "checkpoint_restart: all checks passed"; fi
+exit $failures

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# SIGKILL at random moments never leaves a corrupt latest checkpoint: a run writing a
+# checkpoint after every step is killed again and again (often in the middle of a write); after
+# each kill the run is continued from whatever checkpoint.h5 is there, which must open (a
+# refusal is exit code 2). The finished results must be byte-identical to an uninterrupted
+# run's. The random delays are printed with their seed (SLUICE_TEST_SEED reproduces them).
+# Needs h5dump (hdf5-tools) to print the checkpoint's step.
+# Usage: checkpoint_sigkill.sh <sluice executable> <source dir>
+set -u
+exe=$(realpath "$1")
+src=$(realpath "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+case_file="$src/cases/dam_break_2d.toml"
+sets=(--set particles.dx=0.02 --set time.end_time=0.2 --set time.output_interval=0.05
+      --threads 1 --quiet)
+seed=${SLUICE_TEST_SEED:-$$}
+RANDOM=$seed
+echo "seed $seed"
+
+t0=$(date +%s%N)
+"$exe" run "$case_file" --out "$work/ref" "${sets[@]}" || fail "reference run: exit $?"
+# Kill delays scale with the machine: a random fraction of the uninterrupted run's wall time
+# (the checkpointing run is slower still), so kills land during the run on any machine.
+ref_ms=$((($(date +%s%N) - t0) / 1000000))
+span=$((ref_ms * 2 / 5 > 200 ? ref_ms * 2 / 5 : 200))
+echo "reference run ${ref_ms} ms; kill delays 100..$((100 + span)) ms"
+
+out="$work/kill"
+kills=0 restarts=0 finished=0 advanced=0 last_step=""
+for round in $(seq 1 12); do
+    if [ -f "$out/checkpoint.h5" ]; then
+        args=(--restart "$out")
+        restarts=$((restarts + 1))
+    else
+        args=(--out "$out")
+    fi
+    "$exe" run "$case_file" "${args[@]}" "${sets[@]}" --set checkpoint.every_steps=1 \
+        2>"$work/err.txt" &
+    pid=$!
+    ms=$((100 + RANDOM % span))
+    delay=$(printf '%d.%03d' $((ms / 1000)) $((ms % 1000)))
+    sleep "$delay"
+    kill -KILL $pid 2>/dev/null && kills=$((kills + 1))
+    { wait $pid; } 2>/dev/null
+    code=$?
+    step=$(h5dump -a /step "$out/checkpoint.h5" 2>/dev/null | awk '/\(0\):/ {print $2}')
+    echo "round $round: ${args[0]}, killed after ${delay} s, exit $code, checkpoint at step ${step:-none}"
+    [ -n "$step" ] && [ "$step" != "$last_step" ] && advanced=$((advanced + 1)) && last_step=$step
+    [ $code -eq 2 ] && fail "round $round: the checkpoint was refused: $(cat "$work/err.txt")"
+    if [ $code -eq 0 ]; then
+        finished=1
+        break
+    fi
+    [ $code -eq 137 ] || fail "round $round: exit code $code, expected 137 (SIGKILL) or 0"
+done
+if [ $finished -eq 0 ]; then
+    "$exe" run "$case_file" --restart "$out" "${sets[@]}" 2>"$work/err.txt" ||
+        fail "final restart: exit $? $(cat "$work/err.txt")"
+fi
+[ $kills -ge 5 ] || fail "only $kills kills landed while the run was going"
+[ $restarts -ge 3 ] || fail "only $restarts restarts from a checkpoint"
+[ $advanced -ge 3 ] || fail "the checkpoint advanced only $advanced times between kills"
+
+n=0
+for f in "$work/ref"/snapshots/*.h5; do
+    cmp -s "$f" "$out/snapshots/$(basename "$f")" || fail "$(basename "$f") differs"
+    n=$((n + 1))
+done
+[ "$(ls "$out"/snapshots/*.h5 | wc -l)" -eq "$n" ] || fail "snapshot count differs"
+cmp -s "$work/ref/snapshots.xmf" "$out/snapshots.xmf" || fail "snapshots.xmf differs"
+diff -r "$work/ref/probes" "$out/probes" >/dev/null || fail "probe CSVs differ"
+ls -a "$out" "$out/snapshots" | grep -q '\.tmp$' && fail "temporary files left behind"
+
+if [ $failures -eq 0 ]; then
+    echo "checkpoint_sigkill: $kills kills, $restarts restarts, $n snapshots and probes identical"
+fi
+exit $failures
