@@ -79,7 +79,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     continuity_ = cfg.density == DensityScheme::continuity;
     delta_h_c0_ = continuity_ ? cfg.delta_sph * h_ * cfg.sound_speed : 0.0;
     diffusion_ = DensityDiffusionParams<D>{delta_h_c0_, cfg.density_diffusion,
-                                           cfg.rho0 * momentum_.gravity, eos_};
+                                           cfg.rho0 * momentum_.gravity /
+                                               (cfg.sound_speed * cfg.sound_speed)};
     density_gradient_ = delta_h_c0_ > 0 && cfg.density_diffusion == DensityDiffusion::antuono;
     momentum_.wall_viscous = cfg.no_slip;
     momentum_.p_floor = cfg.background_pressure;

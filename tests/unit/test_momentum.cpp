@@ -128,8 +128,8 @@ TEST_CASE("Fourtakas density diffusion vanishes on a hydrostatic density profile
         L.P.mass[i] = 1000 * L.dx * L.dx;
     }
     const auto rates = [&](const Vec<2>& rho0_g) {
-        DensityDiffusionParams<2> diff{0.1 * L.kernel.h * c0, DensityDiffusion::fourtakas, rho0_g,
-                                       eos};
+        DensityDiffusionParams<2> diff{0.1 * L.kernel.h * c0, DensityDiffusion::fourtakas,
+                                       rho0_g / (c0 * c0)};
         for (const auto& c : L.occ)
             continuity_rate(L.nb(), L.kernel, diff, c.cell, L.P, std::span<const Vec<2>>(L.P.v),
                             std::span<Real>(L.P.drho));

@@ -61,8 +61,8 @@ template <int D>
 struct DensityDiffusionParams {
     Real delta_h_c0 = 0; // delta h c0; 0 = no diffusion
     DensityDiffusion form = DensityDiffusion::antuono;
-    Vec<D> rho0_g = Vec<D>::Zero(); // fourtakas: rho0 times gravity, for the hydrostatic part
-    Eos eos;                        // fourtakas: density of a hydrostatic pressure difference
+    // fourtakas: rho0 g / c0^2, the hydrostatic density gradient (see continuity_rate)
+    Vec<D> hydrostatic_gradient = Vec<D>::Zero();
 };
 
 // Continuity equation with delta-SPH diffusion:
@@ -72,8 +72,11 @@ struct DensityDiffusionParams {
 //             psi_ij = 2 (rho_j - rho_i)(x_j - x_i)/r^2 - (<grad rho>_i + <grad rho>_j)
 //   fourtakas (Fourtakas et al. 2019, eqs. 10-12):
 //             psi_ij = 2 (rho_j - rho_i - rho^H_ji)(x_j - x_i)/r^2, with rho^H_ji the density
-//             difference of the hydrostatic pressure difference rho0 g.(x_j - x_i) through the
-//             EOS; no gradient pass is needed.
+//             difference of the hydrostatic pressure difference rho0 g.(x_j - x_i); no gradient
+//             pass is needed. rho^H_ji is taken to first order, rho0 g.(x_j - x_i)/c0^2 (exact
+//             for the linear EOS). For Tait the second-order term is smaller by
+//             gamma g r / c0^2 ~ 1e-4 over a kernel support, and a pow() per pair costs more
+//             than the rest of the pair.
 // With grad_i W_ij = F dx (dx = x_i - x_j), (x_j - x_i)/r^2 . grad_i W_ij = -F exactly, so
 // neither form divides by r^2 per pair.
 // `vel` is the velocity the leap-frog advances densities with: v^{n+1/2}, the same that
@@ -87,7 +90,6 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     const bool antuono = diff.delta_h_c0 > 0 && diff.form == DensityDiffusion::antuono;
     const bool fourtakas = diff.delta_h_c0 > 0 && diff.form == DensityDiffusion::fourtakas;
-    const Real rho0 = diff.eos.rho0, p_b = diff.eos.p_background;
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
@@ -109,7 +111,7 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
                 diffusion +=
                     Vj * (-2 * (P.rho[j] - rho_i) * Fij - (g_i + P.grad_rho[j]).dot(gradW));
             else if (fourtakas) {
-                const Real rho_h = diff.eos.density(p_b - diff.rho0_g.dot(dx)) - rho0;
+                const Real rho_h = -diff.hydrostatic_gradient.dot(dx); // dx = x_i - x_j
                 diffusion += Vj * (-2 * (P.rho[j] - rho_i - rho_h) * Fij);
             }
         });

@@ -6,6 +6,7 @@
 #include "sluice/core/types.hpp"
 #include "sluice/io/case_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <variant>
@@ -93,6 +94,16 @@ struct WendlandC2Kernel {
         else
             return sigma * inv_h * (-5 * q) * t * t * t;
     }
+    // (dW/dr)/r without the division: q/r = 1/h. Finite at r = 0 (the self pair, whose
+    // gradient F dx is zero anyway).
+    [[nodiscard]] Real dW_over_r(Real r) const {
+        const Real q = r * inv_h;
+        const Real t = std::max(1 - q / 2, Real(0));
+        if constexpr (D == 1)
+            return sigma * inv_h * inv_h * (-3) * t * t;
+        else
+            return sigma * inv_h * inv_h * (-5) * t * t * t;
+    }
 };
 
 // Monaghan & Lattanzio (1985) cubic B-spline, support 2h:
@@ -153,14 +164,19 @@ inline double kernel_support_factor(KernelType type) {
 }
 
 // The radial factor F(r) = (dW/dr)/r of the pair at squared distance r2, so that
-// grad_i W_ij = F dx with dx = x_i - x_j; 0 for the particle itself. grad_W below is F dx
-// bitwise, so neighbour lists may store F once per step (Neighbourhood::for_each_pair).
+// grad_i W_ij = F dx with dx = x_i - x_j. Kernels with a closed form of dW/dr / r (Wendland)
+// give it without a division; for the particle itself F dx is zero whatever F is. Neighbour
+// lists store F once per step (Neighbourhood::for_each_pair).
 template <class K>
 inline Real grad_factor(const K& kernel, Real r2) {
-    if (r2 <= 0)
-        return 0;
-    const Real r = std::sqrt(r2);
-    return kernel.dW(r) / r;
+    if constexpr (requires { kernel.dW_over_r(r2); }) {
+        return kernel.dW_over_r(std::sqrt(r2));
+    } else {
+        if (r2 <= 0)
+            return 0;
+        const Real r = std::sqrt(r2);
+        return kernel.dW(r) / r;
+    }
 }
 
 // Gradient of W with respect to x_i for the pair displacement dx = x_i - x_j at distance r.
