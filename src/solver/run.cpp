@@ -328,6 +328,7 @@ CaseInfo describe_case(const CaseConfig& cfg) {
     info.dt_acoustic = l.acoustic;
     info.dt_viscous = l.viscous;
     info.dt_force = l.force;
+    info.dt_stable = l.min();
     info.dt_estimate = cfg.fixed_dt ? *cfg.fixed_dt : l.min();
     info.cells = 1;
     for (int d = 0; d < cfg.dimension; ++d) {
