@@ -405,6 +405,22 @@ private:
 // ---------------------------------------------------------------------------------------------
 // Parsing and overrides
 
+toml::table parse_case_text(std::string_view text, const std::string& path) {
+    if (text.size() > kMaxCaseFileBytes)
+        throw CaseError(path, "",
+                        fmt::format("is {} bytes long; a case file is at most {} bytes (a few KiB "
+                                    "is usual)",
+                                    text.size(), kMaxCaseFileBytes));
+    try {
+        return toml::parse(text, std::string_view(path));
+    } catch (const toml::parse_error& e) {
+        throw CaseError(path, "",
+                        fmt::format("TOML syntax error at line {}, column {}: {}",
+                                    e.source().begin.line, e.source().begin.column,
+                                    e.description()));
+    }
+}
+
 toml::table parse_case_file(const std::string& path) {
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
@@ -429,15 +445,7 @@ toml::table parse_case_file(const std::string& path) {
     text << in.rdbuf();
     if (in.bad())
         throw CaseError(path, "", "cannot read the case file (I/O error)");
-    try {
-        const std::string doc = text.str();
-        return toml::parse(std::string_view(doc), std::string_view(path));
-    } catch (const toml::parse_error& e) {
-        throw CaseError(path, "",
-                        fmt::format("TOML syntax error at line {}, column {}: {}",
-                                    e.source().begin.line, e.source().begin.column,
-                                    e.description()));
-    }
+    return parse_case_text(text.str(), path);
 }
 
 std::string trim(std::string_view s) {
@@ -1070,6 +1078,15 @@ CaseConfig read_case(const std::string& path, const std::vector<std::string>& ov
     for (const auto& o : overrides)
         apply_override(root, o, r);
     return build(root, r, path);
+}
+
+CaseConfig read_case_text(std::string_view text, const std::string& name,
+                          const std::vector<std::string>& overrides) {
+    Reader r(name);
+    toml::table root = parse_case_text(text, name);
+    for (const auto& o : overrides)
+        apply_override(root, o, r);
+    return build(root, r, name);
 }
 
 } // namespace sluice
