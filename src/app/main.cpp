@@ -115,7 +115,7 @@ int execute(Command command, const std::string& case_path, const std::vector<std
             opts.verbose = verbose;
             opts.trace_path = trace;
             const sluice::RunResult result = sluice::run_case(cfg, opts);
-            if (!quiet && root)
+            if (!quiet && !verbose && root) // --verbose: the log said it already
                 fmt::print(stderr,
                            "sluice: done: {} steps to t = {:.6g} s in {:.1f} s; results in {}\n",
                            result.steps, result.simulated_time, result.wall_seconds, opts.out_dir);
@@ -172,8 +172,13 @@ int main(int argc, char** argv) {
                     "Write a Chrome/Perfetto trace of every task and message (JSON; open in "
                     "ui.perfetto.dev or chrome://tracing)")
         ->type_name("FILE.json");
-    auto* quiet_flag = run->add_flag("--quiet,-q", quiet, "No progress output");
-    run->add_flag("--verbose,-v", verbose, "Detailed log")->excludes(quiet_flag);
+    auto* quiet_flag =
+        run->add_flag("--quiet,-q", quiet,
+                      "Nothing on the terminal but errors (logs/rank_N.log is still written)");
+    run->add_flag("--verbose,-v", verbose,
+                  "Every log line on the terminal (snapshots written, ...) and debug lines in "
+                  "logs/rank_N.log; progress as plain lines")
+        ->excludes(quiet_flag);
 
     CLI::App* info = app.add_subcommand("info", "Describe a case without running it, with "
                                                 "warnings about slow or inaccurate settings");

@@ -5,6 +5,7 @@
 #include "sluice/io/errors.hpp"
 #include "sluice/io/probe_writer.hpp"
 #include "sluice/io/progress.hpp"
+#include "sluice/io/run_log.hpp"
 #include "sluice/io/snapshot_writer.hpp"
 #include "sluice/io/summary.hpp"
 #include "sluice/physics/initial_conditions.hpp"
@@ -164,6 +165,18 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     Simulation<D> sim(cfg, so); // refuses an unrunnable case before anything is written
     const bool root = sim.comm().rank() == 0;
 
+    LogOptions lo;
+    lo.dir = (fs::path(opts.out_dir) / "logs").string();
+    lo.rank = sim.comm().rank();
+    lo.console = root;
+    lo.quiet = opts.quiet;
+    lo.verbose = opts.verbose;
+    RunLog log(lo);
+    log.info("case {} ({}): rank {} of {}, {} worker threads, {} particles on this rank, "
+             "results in {}",
+             cfg.name, cfg.source_file, sim.comm().rank(), sim.comm().size(), threads, sim.owned(),
+             opts.out_dir);
+
     std::unique_ptr<SnapshotWriter<D>> snapshots;
     std::unique_ptr<ProbeWriter> probe_files;
     if (root) {
@@ -204,7 +217,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             }
         if (force || t >= out_next - eps) {
             if (snap_due && root)
-                snapshots->write(*all, t, sim.steps());
+                log.debug("snapshot {} at t = {:.6g} s (step {})",
+                          snapshots->write(*all, t, sim.steps()), t, sim.steps());
             last_output_time = t;
             while (out_next <= t + eps)
                 out_next += out_every;
@@ -225,7 +239,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         total_particles = std::stoull(s);
     }
 
-    Progress progress(cfg.end_time, opts.quiet || !root);
+    Progress progress(cfg.end_time, opts.quiet || !root, opts.verbose);
+    progress.log_to([&log](const std::string& line) { log.file_only(line); });
     const auto t0 = Clock::now();
     sample(false);
     while (sim.time() < cfg.end_time * (1 - 1e-12)) {
@@ -239,6 +254,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             if (snapshots)
                 where = ", last good state in " + snapshots->write(all, sim.time(), sim.steps());
             progress.finish();
+            log.file_only(fmt::format("the run failed: {}{}", e.what(), where));
             throw RunError(std::string(e.what()) + where);
         }
         const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -259,6 +275,10 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.mass_final = sim.gather_particles().total_mass();
     if (!opts.trace_path.empty())
         sim.write_trace(opts.trace_path);
+    log.info("done: {} steps to t = {:.6g} s in {:.2f} s wall, {:.3g} particle-steps/s, {} "
+             "decompositions, {} rebalances",
+             result.steps, result.simulated_time, result.wall_seconds,
+             result.particle_steps_per_second, sim.decompositions(), sim.rebalances().size());
 
     // Per-rank profile to rank 0.
     const auto mine = profile_numbers(sim);
