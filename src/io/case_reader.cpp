@@ -116,6 +116,20 @@ std::string unknown_key_reason(std::string_view key, std::string_view table,
     return r + fmt::format(" (allowed: {})", join_list(allowed));
 }
 
+// Keys and values quoted in messages may hold control characters (TOML escapes allow them):
+// shown as \xNN so a message never rewrites the terminal.
+std::string printable(std::string_view s) {
+    std::string out;
+    for (const char ch : s) {
+        const auto u = static_cast<unsigned char>(ch);
+        if (u < 0x20 || u == 0x7f)
+            out += fmt::format("\\x{:02x}", u);
+        else
+            out += ch;
+    }
+    return out;
+}
+
 std::string type_name(const toml::node& n) {
     switch (n.type()) {
     case toml::node_type::table:
@@ -149,12 +163,12 @@ public:
 
     [[noreturn]] void fail(const std::string& key, const std::string& reason,
                            const toml::node* at = nullptr) const {
-        std::string r = reason;
+        std::string r = printable(reason);
         if (overridden_.count(key) != 0)
             r += " (value given with --set)";
         else if (at != nullptr && at->source().begin.line > 0)
             r += fmt::format(" (line {})", at->source().begin.line);
-        throw CaseError(file_, key, r);
+        throw CaseError(file_, printable(key), r);
     }
 
     void mark_overridden(const std::string& key) { overridden_.insert(key); }

@@ -135,3 +135,29 @@ TEST_CASE("the solver's refusals are made from the configuration alone") {
         CHECK(e.key() == "domain.periodic");
     }
 }
+
+TEST_CASE("wall-plane normals of extreme magnitude are normalised without overflow") {
+    const auto normal = [](const std::string& n) {
+        const CaseConfig c = read_case_text(
+            kCase + "[[walls.planes]]\npoint = [0, 0]\nnormal = " + n + "\n", "check.toml");
+        REQUIRE(c.planes.size() == 1);
+        return c.planes[0].normal;
+    };
+    const auto big = normal("[1e200, 1e200]");
+    CHECK(big[0] == doctest::Approx(std::sqrt(0.5)));
+    CHECK(big[1] == doctest::Approx(std::sqrt(0.5)));
+    const auto tiny = normal("[5e-324, 0]");
+    CHECK(tiny[0] == 1.0);
+    CHECK(tiny[1] == 0.0);
+}
+
+TEST_CASE("control characters in a refused value are shown escaped") {
+    try {
+        (void)read_case_text(kCase, "check.toml", {"case.name=\"a\\u0000b\\nc\""});
+        FAIL("a name with control characters was accepted");
+    } catch (const CaseError& e) {
+        const std::string what = e.what();
+        CHECK(contains(what, "\"a\\x00b\\x0ac\""));
+        CHECK(what.find('\n') == std::string::npos);
+    }
+}
