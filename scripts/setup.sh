@@ -1,16 +1,21 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages sluice needs (as root, no prompts) and configures + builds
-# the given CMake preset (default: release). Idempotent: packages already present are skipped
-# and an existing build directory is reused.
+# the given CMake preset (default: release): every target, or only the targets named after
+# it. Idempotent: packages already present are skipped and an existing build directory is
+# reused. Usage: setup.sh [PRESET [TARGET...]]
 set -euo pipefail
 preset="${1:-release}"
+shift || true
+targets=("$@")
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 packages=(build-essential cmake ninja-build pkg-config git
           libopenmpi-dev openmpi-bin libtbb-dev libeigen3-dev
           libhdf5-openmpi-dev hdf5-tools doctest-dev libtomlplusplus-dev libcli11-dev
           libspdlog-dev libfmt-dev nlohmann-json3-dev libqhull-dev libssl-dev procps python3 python3-numpy python3-matplotlib python3-h5py
-          python3-scipy)
+          python3-scipy bsdutils)
+# The fuzzer needs clang and its runtime (libFuzzer); other presets build with GCC.
+[ "$preset" != fuzz ] || packages+=(clang-14 libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -26,4 +31,8 @@ fi
 
 cd "$here"
 cmake --preset "$preset" >/dev/null
-cmake --build --preset "$preset" -j "$(nproc)"
+if ((${#targets[@]})); then
+    cmake --build --preset "$preset" -j "$(nproc)" --target "${targets[@]}"
+else
+    cmake --build --preset "$preset" -j "$(nproc)"
+fi

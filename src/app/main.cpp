@@ -1,9 +1,10 @@
-// The `sluice` command line: run a case, describe a case.
+// The `sluice` command line: run a case, describe a case, check a case.
 // Exit codes: 0 success, 1 unexpected failure, 2 bad case file, bad command line or a
 // checkpoint that cannot continue the case, 3 the run failed physically (RunError),
 // 4 stopped on request (SIGTERM/SIGINT or a stop file) after writing a checkpoint.
 #include "sluice/io/case_reader.hpp"
 #include "sluice/io/errors.hpp"
+#include "sluice/solver/case_check.hpp"
 #include "sluice/solver/run.hpp"
 #include "sluice/tasks/comm.hpp"
 #include "sluice/version.hpp"
@@ -15,6 +16,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <optional>
 #include <string>
@@ -23,6 +25,16 @@
 namespace {
 
 constexpr int kExitFailure = 1, kExitCaseError = 2, kExitRunError = 3, kExitStopped = 4;
+
+enum class Command { run, info, check };
+
+// Started by mpirun/mpiexec (Open MPI, or a PMI launcher such as srun)?
+bool launched_by_mpi() {
+    for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+        if (std::getenv(v) != nullptr)
+            return true;
+    return false;
+}
 
 std::string version_string() {
     const std::string rev = sluice::git_revision;
@@ -52,7 +64,7 @@ void print_info(const sluice::CaseConfig& cfg, const sluice::CaseInfo& info) {
     fmt::print("support     {:.6g} m (kernel: see physics)\n", info.support);
     if (cfg.fixed_dt)
         fmt::print("dt          {:.4g} s fixed  (stable estimate {:.4g} s)\n", *cfg.fixed_dt,
-                   info.dt_estimate);
+                   info.dt_stable);
     else
         fmt::print("dt          {:.4g} s  (~{:.0f} steps to t = {:.6g} s)\n", info.dt_estimate,
                    info.dt_estimate > 0 ? cfg.end_time / info.dt_estimate : 0.0, cfg.end_time);
@@ -77,6 +89,11 @@ void add_case_options(CLI::App* cmd, std::string& case_path, std::vector<std::st
 
 } // namespace
 
+void print_warnings(const std::vector<sluice::CaseWarning>& warnings) {
+    for (const auto& w : warnings)
+        fmt::print(stderr, "sluice: warning: key '{}': {}\n", w.key, w.message);
+}
+
 // What `sluice run` was given besides the case.
 struct RunFlags {
     std::string out_dir, trace, restart;
@@ -86,15 +103,20 @@ struct RunFlags {
     long debug_fail_step = -1;
 };
 
-// Reads the case and runs or describes it; returns the process exit code.
-int execute(bool run_requested, const std::string& case_path, const std::vector<std::string>& sets,
+// Reads the case and runs, describes or checks it; returns the process exit code.
+int execute(Command command, const std::string& case_path, const std::vector<std::string>& sets,
             const RunFlags& flags) {
     const sluice::tasks::Comm world = sluice::tasks::Comm::world();
     const bool root = world.rank() == 0;
     try {
         // Everything is validated here, before the solver creates the results folder.
         const sluice::CaseConfig cfg = sluice::read_case(case_path, sets);
-        if (run_requested) {
+        const sluice::CaseInfo info = sluice::describe_case(cfg);
+        sluice::check_runnable(cfg, info);
+        const auto warnings = sluice::case_warnings(cfg, info);
+        if (command == Command::run) {
+            if (!flags.quiet && root)
+                print_warnings(warnings);
             sluice::RunOptions opts;
             // A restart continues in the folder it restarts from.
             opts.out_dir = !flags.restart.empty()  ? flags.restart
@@ -118,12 +140,17 @@ int execute(bool run_requested, const std::string& case_path, const std::vector<
                                result.checkpoint, cfg.source_file, opts.out_dir);
                 return kExitStopped;
             }
-            if (!flags.quiet && root)
+            if (!flags.quiet && !flags.verbose && root) // --verbose: the log said it already
                 fmt::print(stderr,
                            "sluice: done: {} steps to t = {:.6g} s in {:.1f} s; results in {}\n",
                            result.steps, result.simulated_time, result.wall_seconds, opts.out_dir);
         } else if (root) {
-            print_info(cfg, sluice::describe_case(cfg));
+            if (command == Command::info)
+                print_info(cfg, info);
+            else
+                fmt::print("{}: ok ({} particles, dt {:.4g} s)\n", case_path,
+                           info.fluid_particles + info.wall_particles, info.dt_estimate);
+            print_warnings(warnings);
         }
     } catch (const sluice::CaseError& e) {
         // Every rank reads the same case and refuses it the same way.
@@ -153,14 +180,6 @@ int execute(bool run_requested, const std::string& case_path, const std::vector<
 }
 
 int main(int argc, char** argv) {
-    // MPI first (it may rewrite argv); without mpirun this is a one-rank world.
-    std::optional<sluice::tasks::MpiSession> mpi;
-    try {
-        mpi.emplace(&argc, &argv);
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "sluice: error: {}\n", e.what());
-        return kExitFailure;
-    }
     CLI::App app{"sluice: particle (SPH) solver for free-surface flow", "sluice"};
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
         return fmt::format("sluice: error: {}\nRun with --help for more information.\n", e.what());
@@ -195,11 +214,20 @@ int main(int argc, char** argv) {
                     "Write a Chrome/Perfetto trace of every task and message (JSON; open in "
                     "ui.perfetto.dev or chrome://tracing)")
         ->type_name("FILE.json");
-    auto* quiet_flag = run->add_flag("--quiet,-q", flags.quiet, "No progress output");
-    run->add_flag("--verbose,-v", flags.verbose, "Detailed log")->excludes(quiet_flag);
+    auto* quiet_flag =
+        run->add_flag("--quiet,-q", flags.quiet,
+                      "Nothing on the terminal but errors (logs/rank_N.log is still written)");
+    run->add_flag("--verbose,-v", flags.verbose,
+                  "Every log line on the terminal (snapshots written, ...) and debug lines in "
+                  "logs/rank_N.log; progress as plain lines")
+        ->excludes(quiet_flag);
 
-    CLI::App* info = app.add_subcommand("info", "Describe a case without running it");
+    CLI::App* info = app.add_subcommand("info", "Describe a case without running it, with "
+                                                "warnings about slow or inaccurate settings");
     add_case_options(info, case_path, sets);
+    CLI::App* check = app.add_subcommand(
+        "check", "Validate a case without running it (exit code 0: it would run, 2: refused)");
+    add_case_options(check, case_path, sets);
 
     try {
         app.parse(argc, argv);
@@ -207,10 +235,25 @@ int main(int argc, char** argv) {
         // --help / --version exit 0; every usage error is a bad command line: 2.
         return app.exit(e) == 0 ? 0 : kExitCaseError;
     }
+    const Command command = run->parsed()    ? Command::run
+                            : info->parsed() ? Command::info
+                                             : Command::check;
+
+    // MPI only where it is needed: a run, or any command under mpirun. Starting it costs
+    // ~0.3 s, which checking many case files need not pay.
+    std::optional<sluice::tasks::MpiSession> mpi;
+    if (command == Command::run || launched_by_mpi()) {
+        try {
+            mpi.emplace(&argc, &argv);
+        } catch (const std::exception& e) {
+            fmt::print(stderr, "sluice: error: {}\n", e.what());
+            return kExitFailure;
+        }
+    }
 
     // Join oneTBB's worker threads before exit (sanitizers otherwise report their state).
     tbb::task_scheduler_handle workers{tbb::attach{}};
-    const int code = execute(run->parsed(), case_path, sets, flags);
+    const int code = execute(command, case_path, sets, flags);
     if (sluice::tasks::Comm::world().parallel())
         // oneTBB 2021.8 can wait forever in finalize() for a worker that an arena fed from
         // outside (the MPI main thread) left asleep; the workers die with the process anyway.

@@ -3,6 +3,7 @@
 #include "sluice/io/case_reader.hpp"
 
 #include "sluice/io/errors.hpp"
+#include "sluice/physics/kernels.hpp"
 
 #include "case_fingerprint.hpp"
 
@@ -73,6 +74,18 @@ const std::vector<std::string> kFieldNames = {"position",     "velocity", "densi
 
 constexpr const char* kAxis = "xyz";
 
+// Bounds that keep every derived quantity finite and every allocation sane. They are far
+// beyond any real case; values past them are typos (units) or hostile input.
+constexpr double kMaxCoordinate = 1e6; // [m] domain corners
+constexpr double kMaxSpeed = 1e5;      // [m/s] initial velocities
+constexpr double kMinDx = 1e-9;        // [m]
+constexpr double kMaxOutputs = 1e7;    // snapshots or probe samples per run
+constexpr std::size_t kMaxNameLength = 200;
+constexpr std::uintmax_t kMaxCaseFileBytes = 1 << 20;
+// Micro-cells of the grid: 32-bit cell indices, and 21 bits per axis of a 3-D Morton key.
+constexpr double kMaxCells = 2e8;
+constexpr double kMaxCellsPerAxis3d = 2097151;
+
 std::string join_key(std::string_view path, std::string_view key) {
     return path.empty() ? std::string(key) : fmt::format("{}.{}", path, key);
 }
@@ -119,6 +132,20 @@ std::string unknown_key_reason(std::string_view key, std::string_view table,
     return r + fmt::format(" (allowed: {})", join_list(allowed));
 }
 
+// Keys and values quoted in messages may hold control characters (TOML escapes allow them):
+// shown as \xNN so a message never rewrites the terminal.
+std::string printable(std::string_view s) {
+    std::string out;
+    for (const char ch : s) {
+        const auto u = static_cast<unsigned char>(ch);
+        if (u < 0x20 || u == 0x7f)
+            out += fmt::format("\\x{:02x}", u);
+        else
+            out += ch;
+    }
+    return out;
+}
+
 std::string type_name(const toml::node& n) {
     switch (n.type()) {
     case toml::node_type::table:
@@ -152,12 +179,12 @@ public:
 
     [[noreturn]] void fail(const std::string& key, const std::string& reason,
                            const toml::node* at = nullptr) const {
-        std::string r = reason;
+        std::string r = printable(reason);
         if (overridden_.count(key) != 0)
             r += " (value given with --set)";
         else if (at != nullptr && at->source().begin.line > 0)
             r += fmt::format(" (line {})", at->source().begin.line);
-        throw CaseError(file_, key, r);
+        throw CaseError(file_, printable(key), r);
     }
 
     void mark_overridden(const std::string& key) { overridden_.insert(key); }
@@ -232,6 +259,19 @@ public:
     void require(bool ok, std::string_view k, const std::string& reason) const {
         if (!ok)
             fail(k, reason);
+    }
+    // Physical plausibility: values beyond these bounds are typos (or hostile) and would
+    // overflow the arithmetic of a run (e.g. rho0 c0^2, mass = rho0 dx^D).
+    void require_at_most(double v, double bound, std::string_view k, std::string_view unit) const {
+        if (std::abs(v) > bound)
+            fail(k, fmt::format("{} {} is implausibly large (the limit is {:g} {}); check the "
+                                "units",
+                                v, unit, bound, unit));
+    }
+    void require_triple_at_most(const Triple& v, double bound, std::string_view k,
+                                std::string_view unit) const {
+        for (double x : v)
+            require_at_most(x, bound, k, unit);
     }
 
     [[nodiscard]] std::optional<double> number(std::string_view k) const {
@@ -395,10 +435,38 @@ private:
 // ---------------------------------------------------------------------------------------------
 // Parsing and overrides
 
+toml::table parse_case_text(std::string_view text, const std::string& path) {
+    if (text.size() > kMaxCaseFileBytes)
+        throw CaseError(path, "",
+                        fmt::format("is {} bytes long; a case file is at most {} bytes (a few KiB "
+                                    "is usual)",
+                                    text.size(), kMaxCaseFileBytes));
+    try {
+        return toml::parse(text, std::string_view(path));
+    } catch (const toml::parse_error& e) {
+        throw CaseError(path, "",
+                        fmt::format("TOML syntax error at line {}, column {}: {}",
+                                    e.source().begin.line, e.source().begin.column,
+                                    e.description()));
+    }
+}
+
 toml::table parse_case_file(const std::string& path) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
+    const auto status = std::filesystem::status(path, ec);
+    if (std::filesystem::is_directory(status))
         throw CaseError(path, "", "is a directory, not a case file");
+    // A FIFO would block forever and a device (/dev/zero) never ends: only plain files.
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        throw CaseError(path, "", "is not a regular file");
+    if (std::filesystem::exists(status)) {
+        const auto size = std::filesystem::file_size(path, ec);
+        if (!ec && size > kMaxCaseFileBytes)
+            throw CaseError(path, "",
+                            fmt::format("is {} bytes long; a case file is at most {} bytes "
+                                        "(a few KiB is usual)",
+                                        size, kMaxCaseFileBytes));
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw CaseError(path, "",
@@ -407,15 +475,7 @@ toml::table parse_case_file(const std::string& path) {
     text << in.rdbuf();
     if (in.bad())
         throw CaseError(path, "", "cannot read the case file (I/O error)");
-    try {
-        const std::string doc = text.str();
-        return toml::parse(std::string_view(doc), std::string_view(path));
-    } catch (const toml::parse_error& e) {
-        throw CaseError(path, "",
-                        fmt::format("TOML syntax error at line {}, column {}: {}",
-                                    e.source().begin.line, e.source().begin.column,
-                                    e.description()));
-    }
+    return parse_case_text(text.str(), path);
 }
 
 std::string trim(std::string_view s) {
@@ -597,12 +657,17 @@ void read_case_table(const Section& s, CaseConfig& c, Reader& r, const std::stri
               fmt::format("\"{}\" cannot be used as a folder name (no '/', '\\', control "
                           "characters, '.' or '..')",
                           c.name));
+    s.require(c.name.size() <= kMaxNameLength, "name",
+              fmt::format("is {} bytes long; at most {} (it becomes a folder name)", c.name.size(),
+                          kMaxNameLength));
     c.description = s.string("description").value_or("");
 }
 
 void read_domain(const Section& s, CaseConfig& c) {
     c.domain_lo = s.required_triple("lo", "lower corner of the domain [m]");
     c.domain_hi = s.required_triple("hi", "upper corner of the domain [m]");
+    s.require_triple_at_most(c.domain_lo, kMaxCoordinate, "lo", "m");
+    s.require_triple_at_most(c.domain_hi, kMaxCoordinate, "hi", "m");
     for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a)
         s.require(c.domain_lo[a] < c.domain_hi[a], "hi",
                   fmt::format("must be above domain.lo on every axis; on {}: lo = {}, hi = {}",
@@ -625,20 +690,26 @@ void read_domain(const Section& s, CaseConfig& c) {
 void read_fluid(const Section& s, CaseConfig& c) {
     c.rho0 = s.required_number("rho0", "reference density [kg/m^3]");
     s.require(c.rho0 > 0, "rho0", fmt::format("must be > 0, got {}", c.rho0));
+    s.require_at_most(c.rho0, 1e6, "rho0", "kg/m^3");
     c.viscosity = s.required_number("viscosity", "dynamic viscosity [Pa s], 0 for inviscid");
     s.require(c.viscosity >= 0, "viscosity", fmt::format("must be >= 0, got {}", c.viscosity));
+    s.require_at_most(c.viscosity, 1e6, "viscosity", "Pa s");
     c.sound_speed = s.required_number("sound_speed", "artificial speed of sound [m/s]");
     s.require(c.sound_speed > 0, "sound_speed", fmt::format("must be > 0, got {}", c.sound_speed));
+    s.require_at_most(c.sound_speed, 1e6, "sound_speed", "m/s");
     // Gravity points down the last axis: -y in 2-D, -z in 3-D.
     c.gravity = c.dimension == 2 ? Triple{0, -9.81, 0} : Triple{0, 0, -9.81};
     if (auto g = s.triple("gravity"))
         c.gravity = *g;
+    s.require_triple_at_most(c.gravity, 1e6, "gravity", "m/s^2");
     c.eos = s.choice("eos", EosType::linear, kEos);
     c.gamma = s.number("gamma", 7);
-    s.require(c.gamma > 0, "gamma", fmt::format("must be > 0, got {}", c.gamma));
+    s.require(c.gamma > 0 && c.gamma <= 20, "gamma",
+              fmt::format("must be in (0, 20] (7 for water), got {}", c.gamma));
     c.background_pressure = s.number("background_pressure", 0);
     s.require(c.background_pressure >= 0, "background_pressure",
               fmt::format("must be >= 0, got {}", c.background_pressure));
+    s.require_at_most(c.background_pressure, 1e12, "background_pressure", "Pa");
 }
 
 // Two axis-aligned boxes share volume (more than the slack on every axis).
@@ -709,8 +780,10 @@ void read_blocks(const Section& root, CaseConfig& c) {
         if (auto v = s.triple("velocity"))
             b.velocity = *v;
         b.shape = s.choice("shape", BlockShape::box, kShapes);
+        s.require_triple_at_most(b.velocity, kMaxSpeed, "velocity", "m/s");
         b.profile = s.choice("profile", VelocityProfile::uniform, kProfiles);
         b.amplitude = s.number("amplitude", 0);
+        s.require_at_most(b.amplitude, kMaxSpeed, "amplitude", "m/s");
         b.hydrostatic = s.boolean("hydrostatic").value_or(true);
         read_block_profile(s, c, b);
 
@@ -744,14 +817,18 @@ void check_block_thickness(const Section& root, const CaseConfig& c) {
 void read_numerics(const Section& s, CaseConfig& c) {
     c.kernel = s.choice("kernel", KernelType::quintic, kKernels);
     c.h_over_dx = s.number("h_over_dx", 1.0);
-    s.require(c.h_over_dx > 0, "h_over_dx", fmt::format("must be > 0, got {}", c.h_over_dx));
+    // Below 0.5 a particle has no neighbour; above 4 the support holds thousands of them.
+    s.require(c.h_over_dx >= 0.5 && c.h_over_dx <= 4, "h_over_dx",
+              fmt::format("must be in [0.5, 4] (typically 1 to 2), got {}", c.h_over_dx));
     c.density = s.choice("density", DensityScheme::continuity, kDensity);
     c.delta_sph = s.number("delta_sph", 0.1);
-    s.require(c.delta_sph >= 0, "delta_sph", fmt::format("must be >= 0, got {}", c.delta_sph));
+    s.require(c.delta_sph >= 0 && c.delta_sph <= 1, "delta_sph",
+              fmt::format("must be in [0, 1] (typically 0.1), got {}", c.delta_sph));
     c.density_diffusion = s.choice("density_diffusion", DensityDiffusion::antuono, kDiffusion);
     c.artificial_viscosity = s.number("artificial_viscosity", 0);
-    s.require(c.artificial_viscosity >= 0, "artificial_viscosity",
-              fmt::format("must be >= 0, got {}", c.artificial_viscosity));
+    s.require(
+        c.artificial_viscosity >= 0 && c.artificial_viscosity <= 10, "artificial_viscosity",
+        fmt::format("must be in [0, 10] (typically 0.01 to 0.1), got {}", c.artificial_viscosity));
     c.shifting = s.number("shifting", 0);
     s.require(c.shifting >= 0 && c.shifting <= 20, "shifting",
               fmt::format("must be in [0, 20], got {}", c.shifting));
@@ -823,10 +900,18 @@ void read_walls(const Section& s, CaseConfig& c) {
         WallPlane w;
         w.point = p.required_triple("point", "a point on the plane [m]");
         w.normal = p.required_triple("normal", "normal pointing into the fluid side");
-        double len2 = 0;
+        p.require_triple_at_most(w.point, kMaxCoordinate, "point", "m");
+        // Scaled by its largest component first, so that neither [1e200, 1e200] overflows
+        // nor [1e-200, 0] underflows on the way to a unit vector.
+        double largest = 0;
         for (double x : w.normal)
+            largest = std::max(largest, std::abs(x));
+        p.require(largest > 0, "normal", "must not be the zero vector");
+        double len2 = 0;
+        for (double& x : w.normal) {
+            x /= largest;
             len2 += x * x;
-        p.require(len2 > 0, "normal", "must not be the zero vector");
+        }
         // Stored as a unit vector so the solver can use it for distances directly.
         const double len = std::sqrt(len2);
         for (double& x : w.normal)
@@ -905,6 +990,10 @@ void read_time(const Section& s, CaseConfig& c) {
     c.output_interval = s.number("output_interval", 0);
     s.require(c.output_interval >= 0, "output_interval",
               fmt::format("must be >= 0 (0 = only the final state), got {}", c.output_interval));
+    s.require(
+        c.output_interval == 0 || c.end_time / c.output_interval <= kMaxOutputs, "output_interval",
+        fmt::format("{} s would write {:.3g} snapshots up to end_time = {} s; at most {:g}",
+                    c.output_interval, c.end_time / c.output_interval, c.end_time, kMaxOutputs));
 }
 
 void read_output(const Section& s, CaseConfig& c) {
@@ -947,6 +1036,9 @@ void read_probes(const Section& root, CaseConfig& c) {
                   fmt::format("\"{}\" is not a valid probe name (letters, digits, '_' and '-' "
                               "only; it becomes a file name)",
                               p.name));
+        s.require(p.name.size() <= kMaxNameLength, "name",
+                  fmt::format("is {} bytes long; at most {} (it becomes a file name)",
+                              p.name.size(), kMaxNameLength));
         s.require(names.insert(p.name).second, "name",
                   fmt::format("another probe is already called \"{}\"", p.name));
 
@@ -979,6 +1071,9 @@ void read_probes(const Section& root, CaseConfig& c) {
         p.interval = s.number("interval", 0);
         s.require(p.interval >= 0, "interval",
                   fmt::format("must be >= 0 (0 = every output interval), got {}", p.interval));
+        s.require(p.interval == 0 || c.end_time / p.interval <= kMaxOutputs, "interval",
+                  fmt::format("{} s would take {:.3g} samples up to end_time = {} s; at most {:g}",
+                              p.interval, c.end_time / p.interval, c.end_time, kMaxOutputs));
         c.probes.push_back(p);
     }
 }
@@ -1055,22 +1150,76 @@ void read_limits(const Section& s, CaseConfig& c) {
               fmt::format("must be above fluid.rho0 = {}, got {}", c.rho0, c.max_density));
 }
 
-// Lattice sites of all blocks; refuses cases that would not fit any sensible machine.
-void check_particle_count(const Section& root, const CaseConfig& c) {
-    double total = 0;
+// Lattice sites along an extent (the solver rounds the same way), in floating point so that a
+// hostile extent cannot overflow an integer.
+double sites(double extent, double dx) {
+    return std::max(1.0, std::round(extent / dx));
+}
+
+// Refuses cases that would not fit any sensible machine, before anything is allocated: the
+// fluid lattice, the dummy-wall lattice around the tank, and the micro-cell grid.
+void check_case_size(const Section& root, const CaseConfig& c) {
+    const auto dim = static_cast<std::size_t>(c.dimension);
+    const auto* dx_node = root.sub("particles").node("dx");
+    double fluid = 0;
     for (const auto& b : c.blocks) {
         double n = 1;
-        for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a)
-            n *= std::max(1.0, std::round((b.hi[a] - b.lo[a]) / c.dx));
-        total += n;
+        for (std::size_t a = 0; a < dim; ++a)
+            n *= sites(b.hi[a] - b.lo[a], c.dx);
+        fluid += n;
     }
-    if (total > max_case_particles)
+    if (fluid > max_case_particles)
         root.reader().fail("particles.dx",
                            fmt::format("the fluid blocks would hold about {:.3g} particles "
                                        "(volume / dx^{}), above the limit of {:.0f} million; "
                                        "increase dx",
-                                       total, c.dimension, max_case_particles / 1e6),
-                           root.sub("particles").node("dx"));
+                                       fluid, c.dimension, max_case_particles / 1e6),
+                           dx_node);
+
+    const double support = kernel_support_factor(c.kernel) * c.h_over_dx * c.dx;
+    const double layers = std::ceil(support / c.dx);
+    if (c.walls == WallModel::dummy) {
+        // Upper bound: the whole lattice of the tank grown by the wall layers on every side.
+        double walls = 1;
+        for (std::size_t a = 0; a < dim; ++a)
+            walls *= sites(c.tank_hi[a] - c.tank_lo[a], c.dx) + 2 * layers;
+        if (walls > max_case_particles)
+            root.reader().fail(
+                "particles.dx",
+                fmt::format("the dummy walls around the tank would need up to {:.3g} particles "
+                            "((tank / dx + wall layers)^{}), above the limit of {:.0f} million; "
+                            "increase dx or make the tank smaller",
+                            walls, c.dimension, max_case_particles / 1e6),
+                dx_node);
+    }
+
+    // The solver's grid: the domain (and tank with its walls) plus one support on open axes,
+    // in cells of one support.
+    double cells = 1;
+    for (std::size_t a = 0; a < dim; ++a) {
+        double lo = c.domain_lo[a], hi = c.domain_hi[a];
+        if (!c.periodic[a]) {
+            const double wall = c.walls == WallModel::dummy ? layers * c.dx : 0.0;
+            lo = std::min(lo, c.tank_lo[a] - wall) - support;
+            hi = std::max(hi, c.tank_hi[a] + wall) + support;
+        }
+        const double n = std::max(1.0, std::floor((hi - lo) / support));
+        if (dim == 3 && n > kMaxCellsPerAxis3d)
+            root.reader().fail(
+                "particles.dx",
+                fmt::format("the domain is {:.3g} kernel supports long along {}; at most {:.0f} "
+                            "in 3-D (Morton keys): increase dx or make the domain smaller",
+                            n, kAxis[a], kMaxCellsPerAxis3d),
+                dx_node);
+        cells *= n;
+    }
+    if (cells > kMaxCells)
+        root.reader().fail("particles.dx",
+                           fmt::format("the domain would need {:.3g} micro-cells (one kernel "
+                                       "support wide), above the limit of {:.0f} million; "
+                                       "increase dx or make the domain smaller",
+                                       cells, kMaxCells / 1e6),
+                           dx_node);
 }
 
 CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
@@ -1085,7 +1234,8 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
 
     const Section particles = top.sub("particles");
     c.dx = particles.required_number("dx", "lattice spacing [m]");
-    particles.require(c.dx > 0, "dx", fmt::format("must be > 0, got {}", c.dx));
+    particles.require(c.dx >= kMinDx, "dx",
+                      fmt::format("must be at least {:g} m, got {}", kMinDx, c.dx));
 
     read_blocks(top, c);
     check_block_thickness(top, c);
@@ -1099,7 +1249,7 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
     read_neighbours(top.sub("neighbours"), c);
     read_checkpoint_table(top.sub("checkpoint"), c);
     read_limits(top.sub("limits"), c);
-    check_particle_count(top, c);
+    check_case_size(top, c);
     return c;
 }
 
@@ -1113,6 +1263,15 @@ CaseConfig read_case(const std::string& path, const std::vector<std::string>& ov
     CaseConfig c = build(root, r, path);
     c.fingerprint = case_fingerprint(root);
     return c;
+}
+
+CaseConfig read_case_text(std::string_view text, const std::string& name,
+                          const std::vector<std::string>& overrides) {
+    Reader r(name);
+    toml::table root = parse_case_text(text, name);
+    for (const auto& o : overrides)
+        apply_override(root, o, r);
+    return build(root, r, name);
 }
 
 } // namespace sluice

@@ -7,6 +7,7 @@
 #include "sluice/io/errors.hpp"
 #include "sluice/io/probe_writer.hpp"
 #include "sluice/io/progress.hpp"
+#include "sluice/io/run_log.hpp"
 #include "sluice/io/snapshot_writer.hpp"
 #include "sluice/io/summary.hpp"
 #include "sluice/physics/initial_conditions.hpp"
@@ -221,6 +222,18 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
 
     const fs::path stop_file = fs::path(opts.out_dir) / "stop";
     const std::string checkpoint_file = checkpoint_path(opts.out_dir);
+    LogOptions lo;
+    lo.dir = (fs::path(opts.out_dir) / "logs").string();
+    lo.rank = sim.comm().rank();
+    lo.console = root;
+    lo.quiet = opts.quiet;
+    lo.verbose = opts.verbose;
+    RunLog log(lo);
+    log.info("case {} ({}): rank {} of {}, {} worker threads, {} particles on this rank, "
+             "results in {}",
+             cfg.name, cfg.source_file, sim.comm().rank(), sim.comm().size(), threads, sim.owned(),
+             opts.out_dir);
+
     std::unique_ptr<SnapshotWriter<D>> snapshots;
     std::unique_ptr<ProbeWriter> probe_files;
     if (root) {
@@ -277,7 +290,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             }
         if (force || t >= out_next - eps) {
             if (snap_due && root)
-                snapshots->write(*all, t, sim.steps());
+                log.debug("snapshot {} at t = {:.6g} s (step {})",
+                          snapshots->write(*all, t, sim.steps()), t, sim.steps());
             last_output_time = t;
             while (out_next <= t + eps)
                 out_next += out_every;
@@ -334,7 +348,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         return fmt::format(", {} in {}", label, snapshots->write(all, sim.time(), sim.steps()));
     };
 
-    Progress progress(cfg.end_time, opts.quiet || !root);
+    Progress progress(cfg.end_time, opts.quiet || !root, opts.verbose);
+    progress.log_to([&log](const std::string& line) { log.file_only(line); });
     const auto t0 = Clock::now();
     const StopSignals signals;
     auto last_checkpoint = Clock::now(), last_stop_check = Clock::now();
@@ -364,6 +379,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             // (the failing step never swapped its buffers in).
             const std::string where = last_snapshot("last good state");
             progress.finish();
+            log.file_only(fmt::format("the run failed: {}{}", e.what(), where));
             throw RunError(std::string(e.what()) + where);
         } catch (const InternalError& e) {
             const std::string where = last_snapshot("state before the failing step");
@@ -419,6 +435,10 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     }
     if (!opts.trace_path.empty())
         sim.write_trace(opts.trace_path);
+    log.info("done: {} steps to t = {:.6g} s in {:.2f} s wall, {:.3g} particle-steps/s, {} "
+             "decompositions, {} rebalances",
+             result.steps, result.simulated_time, result.wall_seconds,
+             result.particle_steps_per_second, sim.decompositions(), sim.rebalances().size());
 
     // Per-rank profile to rank 0.
     const auto mine = profile_numbers(sim);
@@ -489,6 +509,7 @@ CaseInfo describe_case(const CaseConfig& cfg) {
     info.dt_acoustic = l.acoustic;
     info.dt_viscous = l.viscous;
     info.dt_force = l.force;
+    info.dt_stable = l.min();
     info.dt_estimate = cfg.fixed_dt ? *cfg.fixed_dt : l.min();
     info.cells = 1;
     for (int d = 0; d < cfg.dimension; ++d) {

@@ -3,6 +3,7 @@
 #include "sluice/io/case_config.hpp"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sluice {
@@ -18,6 +19,11 @@ namespace sluice {
 // Every problem (unreadable file, syntax, unknown key, wrong type, missing key, impossible
 // value) throws sluice::CaseError naming the file, the offending key and the reason.
 CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The same for a case held in memory (tests, the fuzzer); `name` stands for the file in
+// messages and gives the default case name.
+CaseConfig read_case_text(std::string_view text, const std::string& name,
+                          const std::vector<std::string>& overrides = {});
 
 // Upper bound on the fluid particle count a case may ask for (estimated from the blocks).
 inline constexpr double max_case_particles = 50e6;

@@ -42,7 +42,8 @@ struct CaseInfo {
     double memory_bytes = 0; // estimate of the particle state
     double h = 0;            // smoothing length [m]
     double support = 0;      // kernel support radius [m]
-    double dt_estimate = 0;  // stable time step at rest [s]
+    double dt_estimate = 0;  // time step the run starts with [s] (fixed, or dt_stable)
+    double dt_stable = 0;    // stable time step at rest [s]
     double dt_acoustic = 0, dt_viscous = 0, dt_force = 0;
     std::size_t cells = 0;            // micro-cells of the grid
     std::vector<std::string> physics; // human-readable list of what is switched on

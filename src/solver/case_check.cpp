@@ -1,0 +1,129 @@
+// Checks and advice on a validated case, derived from the configuration alone (no particles).
+#include "sluice/solver/case_check.hpp"
+
+#include "sluice/io/errors.hpp"
+#include "sluice/physics/kernels.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace sluice {
+namespace {
+
+constexpr const char* kAxis = "xyz";
+
+// Lowest and highest value of up . x over the corners of the box [lo, hi].
+std::pair<double, double> height_range(const Triple& lo, const Triple& hi, const Triple& up,
+                                       int dim) {
+    double low = 0, high = 0;
+    for (std::size_t a = 0; a < static_cast<std::size_t>(dim); ++a) {
+        low += std::min(up[a] * lo[a], up[a] * hi[a]);
+        high += std::max(up[a] * lo[a], up[a] * hi[a]);
+    }
+    return {low, high};
+}
+
+} // namespace
+
+void check_runnable(const CaseConfig& cfg, const CaseInfo& info) {
+    for (std::size_t a = 0; a < static_cast<std::size_t>(cfg.dimension); ++a)
+        if (cfg.periodic[a] && (cfg.domain_hi[a] - cfg.domain_lo[a]) < 3 * info.support)
+            throw CaseError(cfg.source_file, "domain.periodic",
+                            fmt::format("the periodic {} axis is {:.4g} m long, shorter than "
+                                        "three kernel supports (3 x {:.4g} m)",
+                                        kAxis[a], cfg.domain_hi[a] - cfg.domain_lo[a],
+                                        info.support));
+    // Same test as the solver's (Simulation), with the fastest initial speed of the blocks.
+    if (cfg.fixed_dt && *cfg.fixed_dt > info.dt_stable)
+        throw CaseError(cfg.source_file, "numerics.dt",
+                        fmt::format("fixed time step {:.4g} s exceeds the stability limit {:.4g} s "
+                                    "(acoustic {:.4g} s, viscous {:.4g} s, force {:.4g} s); "
+                                    "remove numerics.dt to let the solver choose",
+                                    *cfg.fixed_dt, info.dt_stable, info.dt_acoustic,
+                                    info.dt_viscous, info.dt_force));
+}
+
+std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& info) {
+    std::vector<CaseWarning> out;
+    const auto dim = static_cast<std::size_t>(cfg.dimension);
+
+    // Resolution: the smallest fluid block extent or tank dimension over dx. Periodic axes
+    // have no feature to resolve.
+    double smallest = std::numeric_limits<double>::infinity();
+    std::string what;
+    auto consider = [&](double extent, const std::string& name) {
+        if (extent < smallest) {
+            smallest = extent;
+            what = name;
+        }
+    };
+    for (std::size_t a = 0; a < dim; ++a) {
+        if (cfg.periodic[a])
+            continue;
+        for (std::size_t i = 0; i < cfg.blocks.size(); ++i)
+            consider(cfg.blocks[i].hi[a] - cfg.blocks[i].lo[a],
+                     fmt::format("blocks[{}] along {}", i, kAxis[a]));
+        if (cfg.walls != WallModel::none)
+            consider(cfg.tank_hi[a] - cfg.tank_lo[a], fmt::format("the tank along {}", kAxis[a]));
+    }
+    if (std::isfinite(smallest) && smallest / cfg.dx < min_particles_across)
+        out.push_back({"particles.dx",
+                       fmt::format("only {:.3g} particles across {} ({:.4g} m / dx = {:.4g} m); "
+                                   "fewer than ~{:.0f} resolve it poorly (inaccurate): dx <= "
+                                   "{:.3g} m gives {:.0f}",
+                                   smallest / cfg.dx, what, smallest, cfg.dx, min_particles_across,
+                                   smallest / min_particles_across, min_particles_across)});
+
+    // Cost: a tiny time step.
+    if (info.dt_estimate < min_useful_dt) {
+        const char* key = cfg.fixed_dt                           ? "numerics.dt"
+                          : info.dt_estimate == info.dt_acoustic ? "fluid.sound_speed"
+                          : info.dt_estimate == info.dt_viscous  ? "fluid.viscosity"
+                                                                 : "fluid.gravity";
+        out.push_back({key, fmt::format("time step {:.3g} s is below {:.0e} s: about {:.3g} "
+                                        "steps to t = {:.4g} s (slow)",
+                                        info.dt_estimate, min_useful_dt,
+                                        cfg.end_time / info.dt_estimate, cfg.end_time)});
+    }
+
+    // Compressibility: c0 >= 10 sqrt(g H) keeps density variations near 1 % (Monaghan 1994).
+    // Gravity along a periodic axis builds no column, so only the other components count.
+    Triple g{};
+    double g_norm = 0;
+    for (std::size_t a = 0; a < dim; ++a) {
+        g[a] = cfg.periodic[a] ? 0.0 : cfg.gravity[a];
+        g_norm += g[a] * g[a];
+    }
+    g_norm = std::sqrt(g_norm);
+    if (g_norm > 0 && !cfg.blocks.empty()) {
+        Triple up{};
+        for (std::size_t a = 0; a < dim; ++a)
+            up[a] = -g[a] / g_norm;
+        double top = -std::numeric_limits<double>::infinity();
+        double floor = std::numeric_limits<double>::infinity();
+        for (const auto& b : cfg.blocks) {
+            const auto [low, high] = height_range(b.lo, b.hi, up, cfg.dimension);
+            top = std::max(top, high);
+            floor = std::min(floor, low);
+        }
+        if (cfg.walls != WallModel::none) // the fluid may fall to the tank's lowest corner
+            floor =
+                std::min(floor, height_range(cfg.tank_lo, cfg.tank_hi, up, cfg.dimension).first);
+        const double H = top - floor;
+        const double c_min = min_mach_ratio * std::sqrt(g_norm * H);
+        // 0.5 % slack: the shipped cases round 10 sqrt(g H) to the digits a user types.
+        if (cfg.sound_speed < 0.995 * c_min)
+            out.push_back({"fluid.sound_speed",
+                           fmt::format("c0 = {:.4g} m/s is below 10 sqrt(g H) = {:.4g} m/s "
+                                       "(|g| = {:.4g} m/s^2, fluid column H = {:.4g} m): density "
+                                       "will vary by more than ~1 % (inaccurate)",
+                                       cfg.sound_speed, c_min, g_norm, H)});
+    }
+    return out;
+}
+
+} // namespace sluice

@@ -1,0 +1,383 @@
+#!/usr/bin/env python3
+"""Generates the malformed/hostile case corpus in tests/data/bad_cases/generated/ from valid
+cases: every file must be refused by `sluice check` with exit code 2 and a message naming the
+key in expected.tsv (or, for broken syntax, the TOML parse position).
+
+Run from anywhere: /usr/bin/python3 tests/data/bad_cases/generate.py [OUT_DIR]
+(deterministic; the output is committed: rerun after changing this script and commit the
+result; a ctest regenerates into a temporary folder and compares).
+
+expected.tsv: <file>\t<what the message must name>, where the second column is a dotted key
+('fluid.rho0', 'blocks[0].lo'), '@syntax' (a TOML parse error with line and column) or
+'@any' (either: a truncated file may still parse and then lack a key).
+"""
+import copy
+import json
+import math
+import random
+import shutil
+import sys
+import tomllib
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parents[2]
+OUT = Path(sys.argv[1]) if len(sys.argv) > 1 else HERE / "generated"
+BASES = {
+    "db2": ROOT / "cases" / "dam_break_2d.toml",      # 2-D, dummy walls, probes
+    "deb3": ROOT / "cases" / "debris_box_3d.toml",    # 3-D
+    "per2": ROOT / "tests" / "data" / "uniform_flow_periodic.toml",  # periodic, no walls
+}
+
+# ------------------------------------------------------------------------------------------
+# A small TOML writer (tomllib only reads): enough for case files, and able to write values
+# TOML allows but a case must refuse (nan, inf, inline tables, mixed arrays).
+
+
+def value(v):
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        if math.isnan(v):
+            return "nan"
+        if math.isinf(v):
+            return "inf" if v > 0 else "-inf"
+        return repr(v)
+    if isinstance(v, str):
+        return json.dumps(v)  # JSON escapes are valid TOML basic-string escapes
+    if isinstance(v, list):
+        return "[" + ", ".join(value(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{ " + ", ".join(f"{k} = {value(x)}" for k, x in v.items()) + " }"
+    raise TypeError(v)
+
+
+def is_table_array(v):
+    return isinstance(v, list) and v and all(isinstance(x, dict) for x in v)
+
+
+def dump(doc, prefix=""):
+    lines = []
+    for k, v in doc.items():
+        if not isinstance(v, dict) and not is_table_array(v):
+            lines.append(f"{k} = {value(v)}")
+    for k, v in doc.items():
+        name = f"{prefix}{k}"
+        if isinstance(v, dict):
+            lines += ["", f"[{name}]", dump(v, name + ".")]
+        elif is_table_array(v):
+            for entry in v:
+                lines += ["", f"[[{name}]]", dump(entry, name + ".")]
+    return "\n".join(lines).strip("\n") + "\n"
+
+
+# ------------------------------------------------------------------------------------------
+# Structured mutations: (name, function(doc) -> doc, expected key). Keys are the display
+# paths of the case reader (docs/CASE_REFERENCE.md).
+
+
+def set_at(path, v):
+    def f(doc):
+        d = doc
+        parts = path.replace("]", "").replace("[", ".").split(".")
+        for p in parts[:-1]:
+            d = d[int(p)] if p.isdigit() else d.setdefault(p, {})
+        d[parts[-1]] = v
+        return doc
+    return f
+
+
+def delete_at(path):
+    def f(doc):
+        d = doc
+        parts = path.replace("]", "").replace("[", ".").split(".")
+        for p in parts[:-1]:
+            d = d[int(p)] if p.isdigit() else d[p]
+        del d[parts[-1]]
+        return doc
+    return f
+
+
+def has(doc, path):
+    d = doc
+    for p in path.replace("]", "").replace("[", ".").split("."):
+        if p.isdigit():
+            if not isinstance(d, list) or int(p) >= len(d):
+                return False
+            d = d[int(p)]
+        elif isinstance(d, dict) and p in d:
+            d = d[p]
+        else:
+            return False
+    return True
+
+
+WRONG_TYPES = [("str", "heavy"), ("bool", True), ("arr", [1, 2]), ("tbl", {"x": 1})]
+NON_FINITE = [("nan", float("nan")), ("inf", float("inf")), ("ninf", float("-inf"))]
+
+# Numeric keys and values each must refuse (beyond wrong types and non-finite numbers).
+NUMBERS = {
+    "fluid.rho0": [-1000.0, 0, 1e308, 1e7],
+    "fluid.viscosity": [-1e-3, 1e308],
+    "fluid.sound_speed": [0, -28.0, 1e308],
+    "fluid.gamma": [0, -7.0, 1e300],
+    "fluid.background_pressure": [-1.0, 1e300],
+    "particles.dx": [0, -0.01, 1e-300, 5e-324, 1e-7],
+    "numerics.h_over_dx": [0, -1.0, 1e300, 0.1],
+    "numerics.cfl": [0, -0.1, 2.0, 1e308],
+    "numerics.viscous_cfl": [0, 1.5],
+    "numerics.force_cfl": [-1.0, 7],
+    "numerics.delta_sph": [-0.1, 1e300],
+    "numerics.artificial_viscosity": [-1.0, 1e300],
+    "numerics.shifting": [-1.0, 100],
+    "numerics.dt": [0, -1e-4, 1e300, 1.0],
+    "time.end_time": [0, -1.0],
+    "time.output_interval": [-0.1, 1e-300],
+    "walls.restitution": [-0.5, 1.5],
+    "runtime.particles_per_group": [0, -5, 2**62, 1.5],
+    "runtime.rebalance_threshold": [0, 100.0],
+    "runtime.rebalance_window": [0, 10**12],
+    "runtime.rebalance_every": [-1, 10**15],
+    "case.dimension": [1, 4, 0, -2, 2.0, 2**63 - 1],
+    "blocks[0].amplitude": [1e300],
+}
+CHOICES = {
+    "numerics.kernel": ["quintc", "", 3],
+    "numerics.density": ["sum"],
+    "fluid.eos": ["tate"],
+    "walls.model": ["rigid"],
+    "runtime.balance_cost": ["memory"],
+    "runtime.initial_decomposition": ["random"],
+    "walls.tank_faces": [["w+"], "x-", ["x-", "x-"]],
+    "output.fields": [["pressur"], "pressure", ["id", "id"]],
+    "output.snapshots": ["yes", 1],
+    "blocks[0].hydrostatic": ["no"],
+    "blocks[0].profile": ["swirl"],
+    # Names become folder/file names: nothing may escape results/<case>/.
+    "case.name": ["../../etc/evil", "/tmp/abs", "..", ".", "", "a\u0000b", "x" * 300,
+                  "a\\b", 42, "line\nbreak"],
+    "case.description": [7],
+}
+
+
+def triples(dim):
+    bad = [("len1", [0.5]), ("empty", []), ("str", ["a"] * dim), ("nan", [float("nan")] * dim),
+           ("long", [0.1] * (dim + 1)), ("nested", [[0.1]] * dim), ("scalar", 0.5)]
+    if dim == 3:
+        bad.append(("len2", [0.1, 0.2]))
+    return bad
+
+
+def structured(base, doc):
+    dim = doc["case"]["dimension"]
+    muts = []
+
+    def add(name, fn, key):
+        muts.append((name, fn, key))
+
+    keys = list(NUMBERS) + list(CHOICES)
+    for key in NUMBERS:
+        parent = key.rsplit(".", 1)[0]
+        tag = key.replace("[", "").replace("]", "").replace(".", "_")
+        for i, v in enumerate(NUMBERS[key]):
+            add(f"{tag}_bad{i}", set_at(key, v), key)
+        # Wrong types and non-finite values: once per key over the corpus (first base).
+        if base == "db2":
+            for t, v in WRONG_TYPES:
+                add(f"{tag}_{t}", set_at(key, v), key)
+            if key not in ("case.dimension",) and not key.startswith("runtime.") or \
+                    key == "runtime.rebalance_threshold":
+                for t, v in NON_FINITE:
+                    add(f"{tag}_{t}", set_at(key, v), key)
+    for key, vals in CHOICES.items():
+        tag = key.replace("[", "").replace("]", "").replace(".", "_")
+        for i, v in enumerate(vals):
+            add(f"{tag}_bad{i}", set_at(key, v), key)
+    # A wrong element type is blamed on the element.
+    add("walls_tank_faces_int", set_at("walls.tank_faces", ["x-", 1]), "walls.tank_faces[1]")
+    add("output_fields_nested", set_at("output.fields", [["id"]]), "output.fields[0]")
+
+    # Vectors of the wrong length or type.
+    for key in ["domain.lo", "domain.hi", "fluid.gravity", "blocks[0].lo", "blocks[0].hi",
+                "blocks[0].velocity"]:
+        tag = key.replace("[", "").replace("]", "").replace(".", "_")
+        for t, v in triples(dim):
+            shown = key + "[0]" if t in ("str", "nan", "nested") else key
+            add(f"{tag}_{t}", set_at(key, v), shown)
+    if "walls" in doc and doc["walls"].get("model", "none") != "none":
+        for key in ["walls.tank_lo", "walls.tank_hi"]:
+            tag = key.replace(".", "_")
+            for t, v in triples(dim)[:3]:
+                shown = key + "[0]" if t == "str" else key
+                add(f"{tag}_{t}", set_at(key, v), shown)
+        add("tank_outside", set_at("walls.tank_hi", [9e5] * dim), "walls.tank_hi")
+        add("tank_inverted", set_at("walls.tank_lo", [5.0] * dim), "walls.tank_hi")
+    # Huge coordinates and speeds.
+    add("domain_huge", set_at("domain.hi", [1e300] * dim), "domain.hi")
+    add("gravity_huge", set_at("fluid.gravity", [0.0] * (dim - 1) + [-1e300]), "fluid.gravity")
+    add("velocity_huge", set_at("blocks[0].velocity", [1e300] + [0.0] * (dim - 1)),
+        "blocks[0].velocity")
+    add("domain_inverted", set_at("domain.lo", [5.0] * dim), "domain.hi")
+    add("block_outside", set_at("blocks[0].hi", [1e5] * dim), "blocks[0].hi")
+    add("block_inverted", set_at("blocks[0].lo", doc["blocks"][0]["hi"]), "blocks[0].hi")
+    # Absurd sizes: memory would run out long before the first step.
+    big = [1e5] * dim
+    add("count_fluid_huge", lambda d: (set_at("domain.hi", big)(d), set_at("blocks[0].hi", big)(d),
+                                       d.pop("walls", None), d.pop("probes", None), d)[-1],
+        "particles.dx")
+    add("count_cells_huge", lambda d: (set_at("domain.hi", [1e6] * dim)(d), d.pop("walls", None),
+                                       d.pop("probes", None), d)[-1], "particles.dx")
+    if not any(doc["domain"].get("periodic", [False])):
+        add("count_walls_huge",
+            lambda d: (set_at("domain.hi", big)(d),
+                       set_at("walls", {"model": "dummy", "tank_lo": [0.0] * dim,
+                                        "tank_hi": big})(d),
+                       d.pop("probes", None), d)[-1], "particles.dx")
+    if dim == 3:
+        add("cells_axis_huge", lambda d: (set_at("domain.hi", [1e5, 1.0, 1.0])(d),
+                                          d.pop("walls", None), d.pop("probes", None), d)[-1],
+            "particles.dx")
+    # Structure: unknown keys, tables of the wrong kind, missing entries.
+    add("unknown_top", set_at("solver", {"x": 1}), "solver")
+    add("unknown_scalar_top", set_at("threads", 4), "threads")
+    for sec in ["case", "domain", "fluid", "particles", "numerics", "time"]:
+        add(f"unknown_in_{sec}", set_at(f"{sec}.colour", "blue"), f"{sec}.colour")
+        add(f"section_scalar_{sec}", set_at(sec, 3), sec)
+    add("unknown_in_block", set_at("blocks[0].density", 1000.0), "blocks[0].density")
+    add("blocks_table", lambda d: (d.__setitem__("blocks", d["blocks"][0]), d)[-1], "blocks")
+    add("blocks_empty", set_at("blocks", []), "blocks")
+    add("blocks_scalars", set_at("blocks", [1, 2]), "blocks[0]")
+    add("block_overlap", lambda d: (d["blocks"].append(copy.deepcopy(d["blocks"][0])), d)[-1],
+        "blocks[1].lo")
+    add("block_no_lo", delete_at("blocks[0].lo"), "blocks[0].lo")
+    add("walls_planes_zero", set_at("walls.planes", [{"point": [0.0] * dim,
+                                                       "normal": [0.0] * dim}]),
+        "walls.planes[0].normal")
+    add("walls_planes_underflow", set_at("walls.planes", [{"point": [0.0] * dim,
+                                                            "normal": [5e-324] + [0.0] * (dim - 1),
+                                                            "colour": 1}]),
+        "walls.planes[0].colour")
+    for key in ["case.dimension", "domain.lo", "domain.hi", "fluid.rho0", "fluid.viscosity",
+                "fluid.sound_speed", "particles.dx", "time.end_time"]:
+        add(f"missing_{key.replace('.', '_')}", delete_at(key), key)
+    if "probes" in doc:
+        add("probe_name_escape", set_at("probes[0].name", "../../evil"), "probes[0].name")
+        add("probe_name_slash", set_at("probes[0].name", "a/b"), "probes[0].name")
+        add("probe_name_long", set_at("probes[0].name", "p" * 300), "probes[0].name")
+        add("probe_name_dup", set_at("probes[1].name", doc["probes"][0]["name"]), "probes[1].name")
+        add("probe_no_type", delete_at("probes[0].type"), "probes[0].type")
+        add("probe_type", set_at("probes[0].type", "pressur"), "probes[0].type")
+        add("probe_interval", set_at("probes[0].interval", -1.0), "probes[0].interval")
+        add("probe_interval_tiny", set_at("probes[0].interval", 1e-300), "probes[0].interval")
+    if "probes" in doc and doc["probes"][0]["type"] == "pressure":
+        add("probe_position_out", set_at("probes[0].position", [-5.0] * dim), "probes[0].position")
+        add("probe_position_nan", set_at("probes[0].position", [float("nan")] * dim),
+            "probes[0].position[0]")
+    muts = [(n, f, k) for n, f, k in muts if applicable(doc, k, n)]
+    if base != "db2":
+        # The other bases add what depends on dimension, periodicity and geometry.
+        keep = ("_len", "_empty", "_long", "_nested", "_scalar", "_str", "huge", "count_",
+                "cells_", "dimension", "missing_", "tank", "probe", "block", "periodic")
+        muts = [m for m in muts if any(t in m[0] for t in keep)]
+    return muts
+
+
+def applicable(doc, key, name):
+    """Mutations of optional keys the base lacks still apply (they add the key); mutations of
+    probes/walls need the base to have them."""
+    if key.startswith("probes") and "probes" not in doc:
+        return False
+    if key.startswith("probes[") and not has(doc, key.split("].")[0] + "]"):
+        return False
+    if key.startswith("walls.restitution") or key.startswith("walls.tank_faces"):
+        return doc.get("walls", {}).get("model", "none") != "none"
+    return True
+
+
+# ------------------------------------------------------------------------------------------
+# Byte-level mutations: broken syntax, encodings, duplicates, truncation.
+
+
+def raw(base, text):
+    data = text.encode()
+    lines = text.splitlines(keepends=True)
+    muts = []
+
+    def add(name, b, key="@syntax"):
+        muts.append((name, b, key))
+
+    # Truncated after "key =" of several lines, inside a table header, inside a string.
+    eq_lines = [i for i, l in enumerate(lines) if " = " in l and not l.lstrip().startswith("#")]
+    for n, i in enumerate(eq_lines[:: max(1, len(eq_lines) // 6)]):
+        cut = sum(len(l.encode()) for l in lines[:i]) + len(lines[i].split(" = ")[0].encode()) + 3
+        add(f"trunc_value{n}", data[:cut])
+    hdr = [i for i, l in enumerate(lines) if l.startswith("[")]
+    for n, i in enumerate(hdr[:3]):
+        cut = sum(len(l.encode()) for l in lines[:i]) + 3
+        add(f"trunc_header{n}", data[:cut])
+    q = text.find('"')
+    if q >= 0:
+        add("trunc_string", data[: q + 3])
+    # Arbitrary cuts: the rest may still parse (then a key is missing).
+    rnd = random.Random(base)
+    for n in range(4):
+        add(f"trunc_at{n}", data[: rnd.randrange(1, len(data))], "@any")
+    add("empty", b"", "case.dimension")
+    add("only_comment", b"# nothing here\n", "case.dimension")
+    # Not UTF-8: in a comment, a string, a key; overlong encoding; lone surrogate; Latin-1.
+    add("utf8_comment", data.replace(b"#", b"# \xff\xfe", 1))
+    if q >= 0:
+        add("utf8_string", data[: q + 1] + b"\xc3\x28" + data[q + 1:])
+    add("utf8_key", data.replace(b"rho0", b"rh\xf0\x28\x8c\x28", 1))
+    add("utf8_overlong", data.replace(b"rho0", b"rho\xc0\xb0", 1))
+    add("utf8_surrogate", data.replace(b"[fluid]", b"[fl\xed\xa0\x80uid]", 1))
+    add("latin1_name", data.replace(b"[case]\n", b"[case]\n# caf\xe9\n", 1))
+    add("utf16", text.encode("utf-16"))
+    add("nul_byte", data.replace(b"rho0", b"rho\x000", 1))
+    add("bare_cr", data.replace(b"\n", b"\r", 5))
+    # Duplicates: a key, a table.
+    add("dup_key", data.replace(b"rho0 = ", b"rho0 = 1.0\nrho0 = ", 1))
+    add("dup_table", data + b"\n[fluid]\nrho0 = 1.0\n")
+    add("dup_header", data.replace(b"[numerics]", b"[numerics]\n[numerics]", 1))
+    # Broken values.
+    add("int_overflow", data.replace(b"rho0 = ", b"rho0 = 99999999999999999999 #", 1))
+    add("float_garbage", data.replace(b"rho0 = ", b"rho0 = 1.0.0 #", 1))
+    add("date_value", data.replace(b"rho0 = ", b"rho0 = 1979-05-27 #", 1), "fluid.rho0")
+    add("unclosed_array", data.replace(b"lo = [", b"lo = [[", 1))
+    add("garbage_line", data.replace(b"[fluid]", b"[fluid]\n%%% !!!", 1))
+    if base != "db2":
+        return [m for m in muts if m[0].startswith(("trunc", "utf8_key", "dup_key"))]
+    add("binary", bytes(rnd.randrange(256) for _ in range(512)))
+    # Deep nesting (a recursive parser would overflow its stack).
+    add("deep_array", b"x = " + b"[" * 3000 + b"]" * 3000 + b"\n")
+    add("deep_inline", b"x = " + b"{a=" * 2000 + b"1" + b"}" * 2000 + b"\n")
+    add("deep_table", b"[" + b".".join([b"a"] * 2000) + b"]\n", "a")
+    return muts
+
+
+def main():
+    if OUT.exists():
+        shutil.rmtree(OUT)
+    OUT.mkdir()
+    rows = []
+    for base, path in BASES.items():
+        text = path.read_text()
+        doc = tomllib.loads(text)
+        for name, fn, key in structured(base, doc):
+            out = f"{base}_{name}.toml"
+            (OUT / out).write_text(dump(fn(copy.deepcopy(doc))))
+            rows.append((out, key))
+        for name, data, key in raw(base, text):
+            out = f"{base}_{name}.toml"
+            (OUT / out).write_bytes(data)
+            rows.append((out, key))
+    names = [r[0] for r in rows]
+    assert len(names) == len(set(names)), "duplicate file names"
+    (OUT / "expected.tsv").write_text("".join(f"{n}\t{k}\n" for n, k in rows))
+    print(f"{len(rows)} files in {OUT}")
+
+
+if __name__ == "__main__":
+    main()
