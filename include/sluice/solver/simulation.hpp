@@ -151,6 +151,8 @@ private:
     CellGrid<D> grid_;
     CellRanges ranges_;
     std::vector<CellOccupancy> occupied_;
+    Rebinner<D> rebinner_;
+    std::vector<CellIndex> occupied_cells_; // occupied cells at the last adjacency check
     AnyKernel<D> kernel_;
     Eos eos_;
     MomentumParams<D> momentum_;
