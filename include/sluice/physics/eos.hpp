@@ -9,6 +9,20 @@
 
 namespace sluice {
 
+// x^e, by repeated squaring when e is a small whole number (Tait's usual gamma = 7, and the
+// sound speed's (gamma - 1)/2 = 3): pow() per particle was 6 % of a 2-D dam-break step.
+inline Real power(Real x, Real e) {
+    if (e == std::floor(e) && e >= 0 && e <= 16) {
+        auto n = static_cast<unsigned>(e);
+        Real result = 1, base = x;
+        for (; n != 0; n >>= 1, base *= base)
+            if (n & 1U)
+                result *= base;
+        return result;
+    }
+    return std::pow(x, e);
+}
+
 struct Eos {
     EosType type = EosType::linear;
     Real rho0 = 1000, c0 = 10, gamma = 7, p_background = 0;
@@ -16,7 +30,7 @@ struct Eos {
     [[nodiscard]] Real pressure(Real rho) const {
         if (type == EosType::linear)
             return c0 * c0 * (rho - rho0) + p_background;
-        return rho0 * c0 * c0 / gamma * (std::pow(rho / rho0, gamma) - 1) + p_background;
+        return rho0 * c0 * c0 / gamma * (power(rho / rho0, gamma) - 1) + p_background;
     }
     // Inverse: density that gives pressure p.
     [[nodiscard]] Real density(Real p) const {
@@ -30,7 +44,7 @@ struct Eos {
     [[nodiscard]] Real sound_speed(Real rho) const {
         if (type == EosType::linear)
             return c0;
-        return c0 * std::pow(rho / rho0, (gamma - 1) / 2);
+        return c0 * power(rho / rho0, (gamma - 1) / 2);
     }
 };
 
