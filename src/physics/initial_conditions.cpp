@@ -4,8 +4,8 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <utility>
 #include <type_traits>
+#include <utility>
 
 namespace sluice {
 
