@@ -11,14 +11,17 @@
 #            libtbb.so) and reports every write before a task and read inside it as a race
 #            (138 reports in test_graph_neighbour_sums). It becomes meaningful, and can join
 #            the default stages, once CI links a TSan-instrumented oneTBB.
-# Usage: scripts/ci.sh [stage...]   (default: release asan fuzz). Stops at the first stage that
+# Usage: scripts/ci.sh [stage...]   (default: release fuzz). Stops at the first stage that
 # fails; prints the timings either way.
 set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 stages=("$@")
-((${#stages[@]})) || stages=(release asan fuzz)
+# asan is not a default stage yet: its build (57 targets with ASan) and tests took 18 minutes
+# on the 2-core machine (all passed at commit 06158ba), which with the Release stage (~10 min)
+# and fuzz exceeds CI's 30 minutes. Run it with `bash scripts/ci.sh asan`.
+((${#stages[@]})) || stages=(release fuzz)
 
 # Unit tests of the code that owns memory, files, threads and messages (case reading, output,
 # checkpoints, the task runtime); the numerical kernels' unit tests run in the Release stage.
