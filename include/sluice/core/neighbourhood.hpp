@@ -60,22 +60,9 @@ struct Neighbourhood {
     template <class F>
     void for_each_neighbour(const AdjacentCells<D>& adj, std::uint32_t i, F&& f) const {
         if (list != nullptr && list->covers(i)) {
-            const std::uint32_t k = i - list->first;
-            const Vec<D> xi = x[i];
-            const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
-            if (!list->periodic) {
-                for (std::uint32_t p = b; p < e; ++p) {
-                    const std::uint32_t j = list->j[p];
-                    const Vec<D> dx = xi - x[j];
-                    f(j, dx, dx.squaredNorm());
-                }
-            } else {
-                for (std::uint32_t p = b; p < e; ++p) {
-                    const std::uint32_t j = list->j[p];
-                    const Vec<D> dx = xi + list->shift[p] - x[j];
-                    f(j, dx, dx.squaredNorm());
-                }
-            }
+            for_each_listed(i, [&](std::uint32_t, std::uint32_t j, const Vec<D>& dx, Real r2) {
+                f(j, dx, r2);
+            });
             return;
         }
         const Real support2 = support * support;
@@ -94,35 +81,44 @@ struct Neighbourhood {
     }
 
     // As for_each_neighbour, and also passes factor(r2) for the pair: taken from the list
-    // when it holds factors (computed once per step by build_list with the same function, so
-    // the value is bitwise the same), computed here otherwise. The kernel gradient factor
-    // (dW/dr)/r is what every gradient sum needs, and sqrt + kernel per pair is most of a
-    // stage's arithmetic: three stages of a step share one evaluation.
+    // (computed once per step by build_list with the same function), computed here otherwise.
+    // The kernel gradient factor (dW/dr)/r is what every gradient sum needs, and sqrt + kernel
+    // per pair is most of a stage's arithmetic: three stages of a step share one evaluation.
     template <class G, class F>
     void for_each_pair(const AdjacentCells<D>& adj, std::uint32_t i, const G& factor, F&& f) const {
         if (list != nullptr && list->covers(i)) {
-            const std::uint32_t k = i - list->first;
-            const Vec<D> xi = x[i];
-            const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
-            if (!list->periodic) {
-                for (std::uint32_t p = b; p < e; ++p) {
-                    const std::uint32_t j = list->j[p];
-                    const Vec<D> dx = xi - x[j];
-                    f(j, dx, dx.squaredNorm(), list->factor[p]);
-                }
-            } else {
-                for (std::uint32_t p = b; p < e; ++p) {
-                    const std::uint32_t j = list->j[p];
-                    const Vec<D> dx = xi + list->shift[p] - x[j];
-                    f(j, dx, dx.squaredNorm(), list->factor[p]);
-                }
-            }
+            for_each_listed(i, [&](std::uint32_t p, std::uint32_t j, const Vec<D>& dx, Real r2) {
+                f(j, dx, r2, list->factor[p]);
+            });
             return;
         }
         for_each_neighbour(
             adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) { f(j, dx, r2, factor(r2)); });
     }
 
+private:
+    // The listed pairs of i (the list must cover i): f(p, j, dx, r2), p the pair's index.
+    template <class F>
+    void for_each_listed(std::uint32_t i, F&& f) const {
+        const std::uint32_t k = i - list->first;
+        const Vec<D> xi = x[i];
+        const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
+        if (!list->periodic) {
+            for (std::uint32_t p = b; p < e; ++p) {
+                const std::uint32_t j = list->j[p];
+                const Vec<D> dx = xi - x[j];
+                f(p, j, dx, dx.squaredNorm());
+            }
+        } else {
+            for (std::uint32_t p = b; p < e; ++p) {
+                const std::uint32_t j = list->j[p];
+                const Vec<D> dx = xi + list->shift[p] - x[j];
+                f(p, j, dx, dx.squaredNorm());
+            }
+        }
+    }
+
+public:
     // Fills `out` with the neighbours of the particles of `cells`, which must be contiguous
     // in the particle arrays and given in storage order (a cell group's cells), and with
     // factor(r2) for every pair (see for_each_pair). For a centre i with partial(i) true,
