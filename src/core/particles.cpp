@@ -22,6 +22,7 @@ void Particles<D>::permute(std::span<const std::size_t> perm) {
     apply_permutation(v, perm);
     apply_permutation(rho, perm);
     apply_permutation(mass, perm);
+    apply_permutation(x_ref, perm);
     apply_permutation(v_half, perm);
     // Pressure and acceleration of the last step are kept with their particle: probes and
     // snapshots written after a rebin still see consistent fields.

@@ -45,7 +45,7 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
       "hydrostatic"}},
     {"numerics",
      {"kernel", "h_over_dx", "density", "delta_sph", "density_diffusion", "artificial_viscosity",
-      "shifting", "cfl", "viscous_cfl", "force_cfl", "dt"}},
+      "shifting", "cfl", "viscous_cfl", "force_cfl", "dt", "neighbour_skin"}},
     {"walls",
      {"model", "tank_lo", "tank_hi", "tank_faces", "restitution", "no_slip", "planes", "boxes"}},
     {"walls.planes", {"point", "normal"}},
@@ -844,6 +844,11 @@ void read_numerics(const Section& s, CaseConfig& c) {
         s.require(*dt > 0, "dt", fmt::format("a fixed time step must be > 0, got {}", *dt));
         c.fixed_dt = *dt;
     }
+    c.neighbour_skin = s.number("neighbour_skin", c.neighbour_skin);
+    // Beyond 2 dx the wider list costs more per step than rebuilding saves.
+    s.require(c.neighbour_skin >= 0 && c.neighbour_skin <= 2, "neighbour_skin",
+              fmt::format("must be in [0, 2] (in units of dx; 0 = rebuild every step), got {}",
+                          c.neighbour_skin));
 }
 
 void read_walls(const Section& s, CaseConfig& c) {

@@ -115,6 +115,7 @@ void write_h5(const std::string& path, const Checkpoint<D>& c) {
     write_column(f, "id", ids, 1, H5T_NATIVE_UINT64, H5T_STD_U64LE);
     write_column(f, "kind", kinds, 1, H5T_NATIVE_UINT8, H5T_STD_U8LE);
     write_column(f, "x", flat<D>(P.x), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
+    write_column(f, "x_ref", flat<D>(P.x_ref), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
     write_column(f, "v", flat<D>(P.v), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
     write_column(f, "v_half", flat<D>(P.v_half), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
     write_column(f, "a", flat<D>(P.a), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
@@ -274,6 +275,7 @@ Checkpoint<D> read_h5(const std::string& path, const std::string& case_fingerpri
         return vectors<D>(read_column<double>(f, name, D, H5T_NATIVE_DOUBLE, n));
     };
     P.x = vec("x");
+    P.x_ref = vec("x_ref");
     P.v = vec("v");
     P.v_half = vec("v_half");
     P.a = vec("a");

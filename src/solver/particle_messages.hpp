@@ -11,13 +11,14 @@ namespace sluice::messages {
 
 template <int D>
 constexpr std::size_t particle_bytes = sizeof(ParticleId) + sizeof(Kind) +
-                                       (4 * D + 3) * sizeof(Real);
+                                       (5 * D + 3) * sizeof(Real);
 
 template <int D>
 void pack_particle(const Particles<D>& P, std::size_t i, tasks::Bytes& b) {
     tasks::put(b, P.id[i]);
     tasks::put(b, P.kind[i]);
     tasks::put(b, P.x[i]);
+    tasks::put(b, P.x_ref[i]);
     tasks::put(b, P.v[i]);
     tasks::put(b, P.v_half[i]);
     tasks::put(b, P.a[i]);
@@ -36,6 +37,7 @@ void unpack_particles(std::span<const std::byte> b, Particles<D>& P) {
         tasks::take_into(b, pos, P.id[i]);
         tasks::take_into(b, pos, P.kind[i]);
         tasks::take_into(b, pos, P.x[i]);
+        tasks::take_into(b, pos, P.x_ref[i]);
         tasks::take_into(b, pos, P.v[i]);
         tasks::take_into(b, pos, P.v_half[i]);
         tasks::take_into(b, pos, P.a[i]);

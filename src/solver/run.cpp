@@ -464,6 +464,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     extra["rebin_seconds"] = rebin_seconds;
     extra["cell_groups"] = graph.group_count();
     extra["decompositions"] = sim.decompositions();
+    extra["list_rebuilds"] = sim.list_rebuilds();
     extra["last_dt"] = sim.dt();
     if (resumed)
         extra["restarted_from_step"] = start_step;

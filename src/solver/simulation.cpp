@@ -69,6 +69,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
       opts_(std::move(opts)), comm_(tasks::Comm::world()) {
     h_ = cfg.h_over_dx * cfg.dx;
     const double support = kernel_support_factor(cfg.kernel) * h_;
+    skin_ = cfg.neighbour_skin * cfg.dx;
     eos_ = Eos{cfg.eos, cfg.rho0, cfg.sound_speed, cfg.gamma, cfg.background_pressure};
 
     momentum_.gravity = to_vec<D>(cfg.gravity);
@@ -121,7 +122,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         hi[d] = std::max(hi[d], cfg.tank_hi[d] + wall) + support;
     }
     try {
-        grid_ = CellGrid<D>::make(lo, hi, support, periodic);
+        // With a Verlet skin a cell must hold every pair within support + skin of the sort.
+        grid_ = CellGrid<D>::make(lo, hi, support + skin_, periodic);
     } catch (const std::invalid_argument& e) {
         throw CaseError(cfg.source_file, "domain.periodic", e.what());
     }
@@ -163,8 +165,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
                                  : std::max(1, std::min(allowed, tbb::info::default_concurrency()) -
                                                    (comm_.parallel() ? 1 : 0));
     arena_ = std::make_unique<tbb::task_arena>(threads_ + (comm_.parallel() ? 1 : 0), 1);
-    halo_ =
-        std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_, density_gradient_);
+    halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_,
+                                            density_gradient_, skin_ > 0);
     window_busy_.assign(static_cast<std::size_t>(comm_.size()), 0.0);
 
     distribute_initial_particles();
@@ -174,7 +176,17 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     // Groups are independent of the thread count for results; more groups than threads let
     // TBB balance inside a rank.
     target_groups_ = std::max(by_size, 4 * threads_);
-    rebin_and_decompose();
+    if (resume == nullptr) {
+        rebin_and_decompose();
+        P_.x_ref = P_.x;
+    } else {
+        // Sorted, owned and grouped by the positions of the last rebuild, the Verlet lists of
+        // the first step are those of the interrupted run: it goes on bitwise.
+        std::swap(P_.x, P_.x_ref);
+        rebin_and_decompose();
+        std::swap(P_.x, P_.x_ref);
+    }
+    rebuilt_ = true;
 }
 
 template <int D>
@@ -370,7 +382,19 @@ void Simulation<D>::migrate_to_neighbours() {
 }
 
 template <int D>
-bool Simulation<D>::maybe_rebalance(const std::vector<double>& busy_per_rank) {
+void Simulation<D>::rebuild() {
+    // Between rebuilds the particles stay where the last sort put them (each within skin/2 of
+    // where it was sorted), halo plans and groups stay, and no particle changes owner.
+    P_.resize(owned_); // drop the halo copies: they are received afresh next step
+    if (comm_.parallel() && !(balance_due_ && rebalance()))
+        migrate_to_neighbours();
+    balance_due_ = false;
+    rebin_and_decompose();
+    std::copy(P_.x.begin(), P_.x.end(), P_.x_ref.begin());
+}
+
+template <int D>
+void Simulation<D>::update_balance_window(const std::vector<double>& busy_per_rank) {
     for (std::size_t r = 0; r < window_busy_.size(); ++r)
         window_busy_[r] += busy_per_rank[r];
     ++window_steps_;
@@ -378,16 +402,23 @@ bool Simulation<D>::maybe_rebalance(const std::vector<double>& busy_per_rank) {
     const bool window_full = window_steps_ >= cfg_.rebalance_window;
     const bool every = cfg_.rebalance_every > 0 && steps_since_rebalance_ >= cfg_.rebalance_every;
     if (!window_full && !every)
-        return false;
+        return;
     const double measured = tasks::imbalance(window_busy_);
     if (window_full)
         balance_history_.push_back({steps_, measured});
-    const bool due = every || measured > 1 + cfg_.rebalance_threshold;
+    // Acted on at the next rebuild (particles change owner only then).
+    if (every || measured > 1 + cfg_.rebalance_threshold) {
+        balance_due_ = true;
+        balance_measured_ = measured;
+    }
     std::fill(window_busy_.begin(), window_busy_.end(), 0.0);
     window_steps_ = 0;
-    if (!due)
-        return false;
+}
 
+template <int D>
+bool Simulation<D>::rebalance() {
+    const double measured = balance_measured_;
+    const bool every = cfg_.rebalance_every > 0 && steps_since_rebalance_ >= cfg_.rebalance_every;
     // Every rank offers its occupied cells as units of the curve, each with its share (by
     // particle count) of its group's measured cost per step; all ranks compute the same new cut
     // points from the same gathered list.
@@ -492,6 +523,8 @@ void Simulation<D>::build_graph() {
     group_failure_.assign(topo_.neighbours.size(), {});
     group_speed_.assign(topo_.neighbours.size(), 0.0);
     lists_.resize(topo_.neighbours.size());
+    wide_.resize(skin_ > 0 ? topo_.neighbours.size() : 0);
+    group_disp2_.assign(topo_.neighbours.size(), 0.0);
     group_busy_.assign(topo_.neighbours.size(), 0.0);
     graph_steps_ = 0;
 
@@ -538,12 +571,28 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
     NeighbourList<D>& list = lists_[static_cast<std::size_t>(group)];
     // The first stage finds the group's neighbours once; every later stage of the step reuses
     // them (positions do not change within a step).
-    if (stage == 0)
-        nb.build_list(
-            topo_.cells[static_cast<std::size_t>(group)], list,
-            [&kernel](Real r2) { return grad_factor(kernel, r2); },
-            [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; },
-            [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; });
+    if (stage == 0) {
+        const auto factor = [&kernel](Real r2) { return grad_factor(kernel, r2); };
+        // Wall centres list only fluid partners: nothing reads wall-wall pairs.
+        const auto partial = [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; };
+        const auto wanted = [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; };
+        const auto& group_cells = topo_.cells[static_cast<std::size_t>(group)];
+        if (skin_ <= 0) {
+            nb.build_list(group_cells, list, factor, partial, wanted);
+        } else {
+            NeighbourList<D>& wide = wide_[static_cast<std::size_t>(group)];
+            if (rebuilt_) {
+                // Built from the positions of the rebuild (equal to x, except in the first
+                // step after a restart).
+                Neighbourhood<D> within_skin = nb;
+                within_skin.x = std::span<const Vec<D>>(P_.x_ref);
+                within_skin.support = nb.support + skin_;
+                within_skin.build_list(
+                    group_cells, wide, [](Real r2) { return r2; }, partial, wanted);
+            }
+            nb.select_pairs(wide, list, factor);
+        }
+    }
     nb.list = &list;
     const auto& cells = topo_.cells[static_cast<std::size_t>(group)];
     const StageKind kind = stage_kinds_[static_cast<std::size_t>(stage)];
@@ -555,7 +604,8 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
             } else if (density_gradient_) {
                 renormalised_density_gradient(nb, kernel, c, P_, std::span<Vec<D>>(P_.grad_rho));
             }
-            equation_of_state(nb, eos_, c, P_, std::span<Real>(P_.p));
+            equation_of_state(nb, eos_, c, P_, std::span<Real>(P_.p),
+                              std::span<Real>(P_.p_over_rho2), std::span<Real>(P_.volume));
         }
         break;
     case StageKind::walls:
@@ -587,7 +637,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                                                  "(--debug-fail-rank/--debug-fail-step)",
                                                  comm_.rank(), steps_ + 1));
         TimeStepLimits lim;
-        Real speed = 0;
+        Real speed = 0, disp2 = 0;
         std::string failure;
         for (CellIndex c : cells) {
             if (continuity_)
@@ -614,6 +664,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                 lim = min(lim, particle_time_step(ts_params_, eos_.sound_speed(rho), v.norm(),
                                                   P_.a[i].norm()));
                 speed = std::max(speed, v.norm());
+                disp2 = std::max(disp2, (x - P_.x_ref[i]).squaredNorm());
                 if (failure.empty()) {
                     const std::string what = state_fault(bounds_, x, v, rho);
                     if (!what.empty())
@@ -628,6 +679,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
         }
         group_limits_[static_cast<std::size_t>(group)] = lim;
         group_speed_[static_cast<std::size_t>(group)] = speed;
+        group_disp2_[static_cast<std::size_t>(group)] = disp2;
         group_failure_[static_cast<std::size_t>(group)] = std::move(failure);
         break;
     }
@@ -636,6 +688,9 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
 
 template <int D>
 void Simulation<D>::step() {
+    if (rebuilt_)
+        ++list_rebuilds_;
+    halo_->assign_cells = rebuilt_;
     graph_->inject_receive_delay(receive_delay_);
     std::string task_error;
     try {
@@ -666,17 +721,21 @@ void Simulation<D>::step() {
 
     reduce_step_results(task_error); // throws on every rank if anything failed on any
     P_.swap_buffers();
-    P_.resize(owned_); // drop the halo copies: they are received afresh next step
     time_ += dt_;
     ++steps_;
     dt_prev_ = dt_;
     if (!cfg_.fixed_dt)
         dt_ = limits_.min();
-    const auto t0 = std::chrono::steady_clock::now();
-    if (comm_.parallel() && !maybe_rebalance(last_busy_))
-        migrate_to_neighbours();
-    rebin_and_decompose();
-    rebin_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (comm_.parallel())
+        update_balance_window(last_busy_);
+    // The lists stay valid while every particle is within skin/2 of where they were built.
+    rebuilt_ = skin_ <= 0 || disp2_max_ > 0.25 * skin_ * skin_;
+    if (rebuilt_) {
+        const auto t0 = std::chrono::steady_clock::now();
+        rebuild();
+        rebin_seconds_ +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
     profile_.between_wall += tasks::clock_seconds() - t_graph;
 }
 
@@ -688,6 +747,9 @@ void Simulation<D>::reduce_step_results(const std::string& task_error) {
     Real speed = 0;
     for (Real s : group_speed_)
         speed = std::max(speed, s);
+    Real disp2 = 0;
+    for (Real d : group_disp2_)
+        disp2 = std::max(disp2, d);
     // A task that threw comes first: the step's other results may be incomplete.
     enum : std::int64_t { none = 0, physical = 1, internal = 2 };
     std::int64_t failed = task_error.empty() ? none : internal;
@@ -710,6 +772,7 @@ void Simulation<D>::reduce_step_results(const std::string& task_error) {
             throw RunError(failure);
         limits_ = lim;
         u_max_ = speed;
+        disp2_max_ = disp2;
         last_busy_.assign(1, busy);
         requests_agreed_ = requests;
         return;
@@ -718,22 +781,17 @@ void Simulation<D>::reduce_step_results(const std::string& task_error) {
     // requests (stop, checkpoint) and the busy time the balancer needs. Every rank reduces the
     // same list the same way.
     struct Report {
-        double acoustic, viscous, force, speed, busy;
+        double acoustic, viscous, force, speed, disp2, busy;
         std::int64_t failed, requests;
     };
-    const Report mine{lim.acoustic,
-                      lim.viscous,
-                      lim.force,
-                      speed,
-                      busy,
-                      failed,
-                      static_cast<std::int64_t>(requests)};
+    const Report mine{lim.acoustic, lim.viscous, lim.force, speed,
+                      disp2,        busy,        failed,    static_cast<std::int64_t>(requests)};
     const double t0 = tasks::clock_seconds();
     const auto all = comm_.all_gather(
         std::span<const std::byte>(reinterpret_cast<const std::byte*>(&mine), sizeof(mine)));
     between_.push_back({"reduce", -1, true, sizeof(mine), t0, tasks::clock_seconds()});
     TimeStepLimits global;
-    Real global_speed = 0;
+    Real global_speed = 0, global_disp2 = 0;
     int failed_rank = -1;
     std::int64_t failed_kind = none;
     std::int64_t agreed = 0;
@@ -743,6 +801,7 @@ void Simulation<D>::reduce_step_results(const std::string& task_error) {
         std::memcpy(&rep, all[r].data(), sizeof(rep));
         global = min(global, TimeStepLimits{rep.acoustic, rep.viscous, rep.force});
         global_speed = std::max(global_speed, rep.speed);
+        global_disp2 = std::max(global_disp2, rep.disp2);
         last_busy_[r] = rep.busy;
         agreed |= rep.requests;
         if (rep.failed != none && failed_rank < 0) {
@@ -759,6 +818,7 @@ void Simulation<D>::reduce_step_results(const std::string& task_error) {
     }
     limits_ = global;
     u_max_ = global_speed;
+    disp2_max_ = global_disp2;
     requests_agreed_ = static_cast<unsigned>(agreed);
 }
 

@@ -35,7 +35,16 @@ struct Lattice {
     Neighbourhood<2> nb() const {
         return {&grid, &ranges, std::span<const Vec<2>>(P.x), kernel.support()};
     }
+    // The per-particle factors the density stage computes with the pressure (p/rho^2, m/rho),
+    // for fields set directly by a test.
+    void derive_factors() {
+        for (std::size_t i = 0; i < P.size(); ++i) {
+            P.p_over_rho2[i] = P.p[i] / (P.rho[i] * P.rho[i]);
+            P.volume[i] = P.mass[i] / P.rho[i];
+        }
+    }
     void accelerate(const MomentumParams<2>& prm) {
+        derive_factors();
         for (const auto& c : occ)
             acceleration(nb(), kernel, prm, c.cell, P, std::span<Vec<2>>(P.a));
     }
@@ -86,6 +95,7 @@ TEST_CASE("Continuity rate gives -rho div u for u = (sin 2 pi x, 0)") {
     const double k = 2 * std::numbers::pi;
     for (std::size_t i = 0; i < L.P.size(); ++i)
         L.P.v[i] = Vec<2>(std::sin(k * L.P.x[i][0]), 0);
+    L.derive_factors();
     for (const auto& c : L.occ)
         continuity_rate(L.nb(), L.kernel, DensityDiffusionParams<2>{}, c.cell, L.P,
                         std::span<const Vec<2>>(L.P.v), std::span<Real>(L.P.drho));
@@ -127,6 +137,7 @@ TEST_CASE("Fourtakas density diffusion vanishes on a hydrostatic density profile
         L.P.rho[i] = eos.density(1000 * g * (1 - L.P.x[i][1]));
         L.P.mass[i] = 1000 * L.dx * L.dx;
     }
+    L.derive_factors();
     const auto rates = [&](const Vec<2>& rho0_g) {
         DensityDiffusionParams<2> diff{0.1 * L.kernel.h * c0, DensityDiffusion::fourtakas,
                                        rho0_g / (c0 * c0)};

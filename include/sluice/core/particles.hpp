@@ -18,14 +18,19 @@ struct Particles {
     std::vector<Vec<D>> v;  // velocity [m/s]
     std::vector<Real> rho;  // density [kg/m^3]
     std::vector<Real> mass; // [kg]: constant for fluid; wall particles rho_w dx^D, set each step
+    // Position at the last neighbour-list rebuild (numerics.neighbour_skin): the particles are
+    // sorted, and the Verlet lists built, by these positions until the next rebuild.
+    std::vector<Vec<D>> x_ref;
 
     // Derived within a step.
-    std::vector<Real> p;          // pressure [Pa]
-    std::vector<Vec<D>> a;        // acceleration [m/s^2]
-    std::vector<Real> drho;       // density rate [kg/m^3/s] (continuity scheme)
-    std::vector<Vec<D>> grad_rho; // renormalised density gradient (delta-SPH)
-    std::vector<Vec<D>> v_bc;     // wall particles: velocity seen by the viscous term (Adami)
-    std::vector<Vec<D>> shift;    // particle-shifting displacement of this step
+    std::vector<Real> p;           // pressure [Pa]
+    std::vector<Real> p_over_rho2; // fluid: p / rho^2, the pressure term's factor [m^5/(kg s^2)]
+    std::vector<Real> volume;      // fluid: m / rho [m^D]
+    std::vector<Vec<D>> a;         // acceleration [m/s^2]
+    std::vector<Real> drho;        // density rate [kg/m^3/s] (continuity scheme)
+    std::vector<Vec<D>> grad_rho;  // renormalised density gradient (delta-SPH)
+    std::vector<Vec<D>> v_bc;      // wall particles: velocity seen by the viscous term (Adami)
+    std::vector<Vec<D>> shift;     // particle-shifting displacement of this step
 
     // Leap-frog half-step velocity v^{n-1/2}; read and written only by the particle's own
     // integration task, so it needs no second buffer.
@@ -45,7 +50,10 @@ struct Particles {
         v.resize(n, Vec<D>::Zero());
         rho.resize(n, 0);
         mass.resize(n, 0);
+        x_ref.resize(n, Vec<D>::Zero());
         p.resize(n, 0);
+        p_over_rho2.resize(n, 0);
+        volume.resize(n, 0);
         a.resize(n, Vec<D>::Zero());
         drho.resize(n, 0);
         grad_rho.resize(n, Vec<D>::Zero());
@@ -68,6 +76,7 @@ struct Particles {
         v[i] = vel;
         rho[i] = density;
         mass[i] = m;
+        x_ref[i] = pos;
         v_half[i] = vel;
     }
 

@@ -114,6 +114,9 @@ struct CaseConfig {
     double viscous_cfl = 0.125; // dt <= viscous_cfl * h^2 / nu
     double force_cfl = 0.25;    // dt <= force_cfl * sqrt(h/|a|max)
     std::optional<double> fixed_dt; // [s]; refused if above the stability limit
+    // Verlet skin in units of dx: neighbour lists hold pairs within support + skin and are
+    // rebuilt (with the particle sort) only when a particle has moved more than skin/2.
+    double neighbour_skin = 0.5;
 
     // [walls]
     WallModel walls = WallModel::none;

@@ -7,7 +7,8 @@
 //                    ranks (int32, information only), sluice_version (string),
 //                    time, dt, dt_prev, u_max, limit_acoustic, limit_viscous, limit_force,
 //                    out_next, last_output_time (float64), step (int64)
-//   datasets         particles: id (N uint64), kind (N uint8), x, v, v_half, a (N x D float64),
+//   datasets         particles: id (N uint64), kind (N uint8), x, x_ref, v, v_half, a
+//                    (N x D float64; x_ref: positions at the last neighbour-list rebuild),
 //                    rho, mass, p (N float64), in curve order;
 //                    probe_next (K float64), probe_bytes (K uint64);
 //                    snapshot_time (S float64), snapshot_particles (S uint64)
@@ -25,7 +26,7 @@
 namespace sluice {
 
 // Bumped whenever the layout above changes; other versions are refused.
-inline constexpr int checkpoint_format_version = 1;
+inline constexpr int checkpoint_format_version = 2; // 2: x_ref added
 
 // The solver's state between two steps, besides the particles.
 struct SolverState {

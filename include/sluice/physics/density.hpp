@@ -106,7 +106,7 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
                 return;
             }
             drho += P.mass[j] * (v_i - vel[j]).dot(gradW);
-            const Real Vj = P.mass[j] / P.rho[j];
+            const Real Vj = P.volume[j];
             if (antuono)
                 diffusion +=
                     Vj * (-2 * (P.rho[j] - rho_i) * Fij - (g_i + P.grad_rho[j]).dot(gradW));
@@ -119,13 +119,22 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
     }
 }
 
-// Pressure from the equation of state for the fluid particles of cell c.
+// Pressure from the equation of state for the fluid particles of cell c, and the two
+// per-particle factors the pair loops of the step read of a fluid neighbour j: p_j / rho_j^2
+// (momentum) and V_j = m_j / rho_j (continuity). Computed once per particle here instead of
+// once per pair there: the same values (the same expressions), without a division per pair.
 template <int D>
 void equation_of_state(const Neighbourhood<D>& nb, const Eos& eos, CellIndex c,
-                       const Particles<D>& P, std::span<Real> p_out) {
+                       const Particles<D>& P, std::span<Real> p_out,
+                       std::span<Real> p_over_rho2_out, std::span<Real> volume_out) {
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
-        if (P.kind[i] == Kind::fluid)
-            p_out[i] = eos.pressure(P.rho[i]);
+        if (P.kind[i] == Kind::fluid) {
+            const Real rho = P.rho[i];
+            const Real p = eos.pressure(rho);
+            p_out[i] = p;
+            p_over_rho2_out[i] = p / (rho * rho);
+            volume_out[i] = P.mass[i] / rho;
+        }
 }
 
 } // namespace sluice

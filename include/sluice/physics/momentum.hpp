@@ -42,7 +42,7 @@ SLUICE_FLATTEN void acceleration(const Neighbourhood<D>& nb, const K& kernel,
         if (P.kind[i] != Kind::fluid)
             continue;
         const Real rho_i = P.rho[i];
-        const Real p_over_rho2_i = P.p[i] / (rho_i * rho_i);
+        const Real p_over_rho2_i = P.p_over_rho2[i];
         const Vec<D> v_i = P.v[i];
         Vec<D> acc = Vec<D>::Zero();
         nb.for_each_pair(adj, i, F, [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real dWr) {
@@ -56,7 +56,7 @@ SLUICE_FLATTEN void acceleration(const Neighbourhood<D>& nb, const K& kernel,
                 const Real pi = std::max(P.p[i], prm.p_floor), pj = std::max(P.p[j], prm.p_floor);
                 acc -= m_j * (pi / (rho_i * rho_i) + pj / (rho_j * rho_j)) * gradW;
             } else {
-                acc -= m_j * (p_over_rho2_i + P.p[j] / (rho_j * rho_j)) * gradW;
+                acc -= m_j * (p_over_rho2_i + P.p_over_rho2[j]) * gradW;
             }
 
             if (!wall || prm.wall_viscous) {

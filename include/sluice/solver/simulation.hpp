@@ -83,6 +83,10 @@ public:
     // Everything but the particles that a checkpoint needs to continue bitwise.
     [[nodiscard]] SolverState solver_state() const;
 
+    // Steps that began with a neighbour-list rebuild (every step when numerics.neighbour_skin
+    // is 0).
+    [[nodiscard]] long list_rebuilds() const { return list_rebuilds_; }
+
     // Adds StepRequest flags to this rank's report of the next step.
     void post_request(unsigned flags) { requests_local_ |= flags; }
     // Union of the flags every rank posted before the last step.
@@ -134,8 +138,10 @@ public:
 private:
     void distribute_initial_particles();
     void rebin_and_decompose();
+    void rebuild();
     void migrate_to_neighbours();
-    bool maybe_rebalance(const std::vector<double>& busy_per_rank);
+    void update_balance_window(const std::vector<double>& busy_per_rank);
+    bool rebalance();
     void plan_halo();
     [[nodiscard]] std::vector<std::vector<int>> boundary_groups() const;
     void reduce_step_results(const std::string& task_error);
@@ -176,7 +182,15 @@ private:
     std::vector<TimeStepLimits> group_limits_;
     std::vector<std::string> group_failure_;
     std::vector<NeighbourList<D>> lists_; // per group, rebuilt by its first stage each step
-    std::vector<Real> group_speed_;       // largest fluid speed per group (shifting velocity scale)
+    // Verlet lists (skin > 0): per group, the pairs within support + skin at the last rebuild;
+    // each step's lists_ are selected from them.
+    std::vector<NeighbourList<D>> wide_;
+    Real skin_ = 0;       // numerics.neighbour_skin [m]
+    bool rebuilt_ = true; // the coming (or running) step starts from a rebuild
+    long list_rebuilds_ = 0;
+    std::vector<Real> group_disp2_; // per group: largest squared displacement from x_ref
+    Real disp2_max_ = 0;            // over all ranks, after the last step
+    std::vector<Real> group_speed_; // largest fluid speed per group (shifting velocity scale)
     Real u_max_ = 0;
 
     double time_ = 0, dt_ = 0, dt_prev_ = 0;
@@ -208,6 +222,8 @@ private:
     std::vector<double> last_busy_;   // per rank, busy seconds of the last step
     std::vector<double> window_busy_; // per rank, since the last rebalance or check
     long window_steps_ = 0, steps_since_rebalance_ = 0;
+    bool balance_due_ = false;    // a rebalance is due at the next rebuild
+    double balance_measured_ = 0; // the imbalance that made it due
     std::vector<RebalanceRecord> rebalances_;
     std::vector<BalanceSample> balance_history_;
     bool force_regroup_ = false;

@@ -1,0 +1,143 @@
+// Verlet lists (numerics.neighbour_skin): pairs selected from a list built within support +
+// skin at earlier positions must be exactly the pairs a fresh search finds, as long as no
+// particle has moved more than skin/2, in the order of the wider list, with the same factor.
+#include "sluice/core/neighbourhood.hpp"
+#include "sluice/core/rebin.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <utility>
+
+using namespace sluice;
+
+namespace {
+
+template <int D>
+struct Cloud {
+    Particles<D> P;
+    CellGrid<D> grid;
+    CellRanges ranges;
+    std::vector<CellOccupancy> occ;
+    std::vector<CellIndex> cells; // occupied cells in storage order
+    Real support, skin;
+
+    // n^D jittered lattice particles in the unit box (periodic on axis 0 if asked).
+    Cloud(int n, Real support_, Real skin_, bool periodic, std::mt19937& rng)
+        : support(support_), skin(skin_) {
+        std::uniform_real_distribution<Real> jitter(-0.3, 0.3);
+        const Real dx = Real(1) / n;
+        const int total = D == 2 ? n * n : n * n * n;
+        for (int k = 0; k < total; ++k) {
+            Vec<D> x;
+            int r = k;
+            for (int d = 0; d < D; ++d, r /= n)
+                x[d] = ((r % n) + Real(0.5) + jitter(rng)) * dx;
+            P.push_back(static_cast<ParticleId>(k), Kind::fluid, x, Vec<D>::Zero(), 1000, 1);
+        }
+        std::array<bool, D> per{};
+        per[0] = periodic;
+        grid = CellGrid<D>::make(Vec<D>::Zero(), Vec<D>::Ones(), support + skin, per);
+        rebin(grid, P, ranges, occ);
+        for (const auto& c : occ)
+            cells.push_back(c.cell);
+        P.x_ref = P.x;
+    }
+    Neighbourhood<D> nb(Real radius, const std::vector<Vec<D>>& x) const {
+        return {&grid, &ranges, std::span<const Vec<D>>(x), radius};
+    }
+};
+
+const auto none = [](std::uint32_t) { return false; };
+const auto all = [](std::uint32_t) { return true; };
+const auto square = [](Real r2) { return r2; };
+
+template <int D>
+std::set<std::pair<std::uint32_t, std::uint32_t>> pair_set(const NeighbourList<D>& L) {
+    std::set<std::pair<std::uint32_t, std::uint32_t>> s;
+    for (std::size_t k = 0; k + 1 < L.offset.size(); ++k)
+        for (std::uint32_t p = L.offset[k]; p < L.offset[k + 1]; ++p)
+            s.emplace(L.first + static_cast<std::uint32_t>(k), L.j[p]);
+    return s;
+}
+
+template <int D>
+void check_selection(bool periodic, unsigned seed) {
+    std::mt19937 rng(seed);
+    const int n = D == 2 ? 24 : 10;
+    const Real dx = Real(1) / n, support = Real(2.4) * dx, skin = Real(0.5) * dx;
+    Cloud<D> C(n, support, skin, periodic, rng);
+    NeighbourList<D> wide, selected, fresh;
+    C.nb(support + skin, C.P.x_ref).build_list(C.cells, wide, square, none, all);
+
+    // Every particle moves by just under skin/2 in a random direction (wrapped on the
+    // periodic axis only by the image shift the lists carry, so positions stay in the box).
+    std::normal_distribution<Real> dir(0, 1);
+    for (auto& x : C.P.x) {
+        Vec<D> u;
+        for (int d = 0; d < D; ++d)
+            u[d] = dir(rng);
+        x += Real(0.499) * skin * u.normalized();
+    }
+    C.nb(support, C.P.x).select_pairs(wide, selected, square);
+    C.nb(support, C.P.x).build_list(C.cells, fresh, square, none, all);
+
+    REQUIRE(selected.pairs == fresh.pairs);
+    CHECK(pair_set(selected) == pair_set(fresh));
+    // The selection keeps the wider list's order and stores r^2 (the factor given) exactly.
+    for (std::size_t k = 0; k + 1 < selected.offset.size(); ++k) {
+        const std::uint32_t i = selected.first + static_cast<std::uint32_t>(k);
+        std::uint32_t last_pos = 0;
+        for (std::uint32_t p = selected.offset[k]; p < selected.offset[k + 1]; ++p) {
+            const std::uint32_t j = selected.j[p];
+            const auto* b = wide.j.data() + wide.offset[k];
+            const auto* e = wide.j.data() + wide.offset[k + 1];
+            const auto pos = static_cast<std::uint32_t>(std::find(b, e, j) - b);
+            REQUIRE(pos < static_cast<std::uint32_t>(e - b));
+            CHECK((p == selected.offset[k] || pos > last_pos));
+            last_pos = pos;
+            // The same expression as the pair loops (for_each_listed) use.
+            const Vec<D> d = selected.periodic ? Vec<D>(C.P.x[i] + selected.shift[p] - C.P.x[j])
+                                               : Vec<D>(C.P.x[i] - C.P.x[j]);
+            CHECK(selected.factor[p] == d.squaredNorm());
+        }
+    }
+}
+
+} // namespace
+
+TEST_CASE("Pairs selected from a Verlet list equal a fresh search after moves below skin/2") {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+        check_selection<2>(false, seed);
+        check_selection<2>(true, seed);
+        check_selection<3>(false, seed);
+    }
+}
+
+TEST_CASE("A move beyond skin/2 can lose a pair: the rebuild criterion is needed") {
+    // Two particles just outside support + skin of each other, moving towards each other by
+    // more than skin/2 each, end up within the support, but the wider list does not hold them.
+    Particles<2> P;
+    const Real support = 0.1, skin = 0.02;
+    P.push_back(0, Kind::fluid, Vec<2>(0.40, 0.5), Vec<2>::Zero(), 1000, 1);
+    P.push_back(1, Kind::fluid, Vec<2>(0.40 + support + skin + 0.001, 0.5), Vec<2>::Zero(), 1000,
+                1);
+    CellGrid<2> grid = CellGrid<2>::make(Vec<2>::Zero(), Vec<2>::Ones(), support + skin, {});
+    CellRanges ranges;
+    std::vector<CellOccupancy> occ;
+    rebin(grid, P, ranges, occ);
+    std::vector<CellIndex> cells;
+    for (const auto& c : occ)
+        cells.push_back(c.cell);
+    NeighbourList<2> wide, selected;
+    Neighbourhood<2>{&grid, &ranges, std::span<const Vec<2>>(P.x), support + skin}.build_list(
+        cells, wide, square, none, all);
+    P.x[0][0] += 0.6 * skin;
+    P.x[1][0] -= 0.6 * skin;
+    REQUIRE((P.x[0] - P.x[1]).norm() < support);
+    Neighbourhood<2>{&grid, &ranges, std::span<const Vec<2>>(P.x), support}.select_pairs(
+        wide, selected, square);
+    CHECK(selected.pairs == 2); // each particle with itself only
+}
