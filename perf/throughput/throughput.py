@@ -54,12 +54,13 @@ STAGE_PAIRS = {
 
 # Accuracy at the benchmark settings: the validation cases (cases/dam_break_2d.toml, the
 # Martin & Moyce n^2 = 2 column, and cases/hydrostatic_2d.toml) run with configuration 1's
-# numerics (kernel, h, CFL, alpha, delta, EOS, no laminar viscosity; c0 = 20 sqrt(g H) for
-# their own water depth H), errors as in tests/validation/ (perf/speed_vs_error/evaluate.py),
+# numerics (kernel, h, CFL, alpha, delta and its Fourtakas form, EOS, no laminar viscosity;
+# c0 = 20 sqrt(g H) for their own water depth H), errors as in tests/validation/ (perf/speed_vs_error/evaluate.py),
 # compared with the validation thresholds.
 PEER_NUMERICS = {"numerics.kernel": "wendland_c2", "numerics.h_over_dx": math.sqrt(2.0),
                  "numerics.cfl": 0.2, "numerics.artificial_viscosity": 0.02,
                  "numerics.delta_sph": 0.1, "numerics.density": "continuity",
+                 "numerics.density_diffusion": "fourtakas",
                  "fluid.eos": "tait", "fluid.viscosity": 0.0, "output.snapshots": False}
 ACCURACY = [
     ("dam_break", "cases/dam_break_2d.toml",

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstring>
 #include <fmt/format.h>
+#include <limits>
 
 namespace sluice {
 
@@ -157,6 +158,19 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         limits_ = TimeStepLimits{st.limit_acoustic, st.limit_viscous, st.limit_force};
     }
 
+    // Neighbour lists rely on fluid particles coming first in every cell (build_list): fluid
+    // ids below wall ids, as the initial conditions number them.
+    {
+        ParticleId max_fluid = 0, min_wall = std::numeric_limits<ParticleId>::max();
+        for (std::size_t i = 0; i < P_.size(); ++i)
+            if (P_.kind[i] == Kind::fluid)
+                max_fluid = std::max(max_fluid, P_.id[i]);
+            else
+                min_wall = std::min(min_wall, P_.id[i]);
+        if (P_.count(Kind::fluid) > 0 && P_.count(Kind::wall) > 0 && max_fluid > min_wall)
+            throw InternalError("wall particles must be numbered after every fluid particle");
+    }
+
     // Worker threads of this rank. On several ranks the main thread drives MPI and the
     // arena gets one slot more for it (run_case raises TBB's global limit to match).
     const auto allowed = static_cast<int>(
@@ -169,6 +183,11 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
                                             density_gradient_, skin_ > 0);
     window_busy_.assign(static_cast<std::size_t>(comm_.size()), 0.0);
 
+    // A restart sorts, distributes and groups the particles by the positions of the last
+    // rebuild, so that the Verlet lists of its first step are those of the interrupted run and
+    // it goes on bitwise (a fresh start has x_ref = x).
+    if (resume != nullptr)
+        std::swap(P_.x, P_.x_ref);
     distribute_initial_particles();
     const std::size_t n = P_.size();
     const auto per_group = static_cast<std::size_t>(std::max(1, cfg.particles_per_group));
@@ -176,16 +195,11 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     // Groups are independent of the thread count for results; more groups than threads let
     // TBB balance inside a rank.
     target_groups_ = std::max(by_size, 4 * threads_);
-    if (resume == nullptr) {
-        rebin_and_decompose();
+    rebin_and_decompose();
+    if (resume != nullptr)
+        std::swap(P_.x, P_.x_ref);
+    else
         P_.x_ref = P_.x;
-    } else {
-        // Sorted, owned and grouped by the positions of the last rebuild, the Verlet lists of
-        // the first step are those of the interrupted run: it goes on bitwise.
-        std::swap(P_.x, P_.x_ref);
-        rebin_and_decompose();
-        std::swap(P_.x, P_.x_ref);
-    }
     rebuilt_ = true;
 }
 

@@ -96,6 +96,38 @@ struct Neighbourhood {
             adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) { f(j, dx, r2, factor(r2)); });
     }
 
+    // sum + the sum over the pairs of i of f(j, dx, r2, factor) (as for_each_pair), added in
+    // pair order. The running sum is a local of this loop rather than a variable the pair
+    // function captures by reference: GCC then keeps it in registers (with a captured
+    // accumulator it stored and reloaded it every pair, a store-forwarding stall per pair).
+    template <class T, class G, class F>
+    [[nodiscard]] T sum_over_pairs(const AdjacentCells<D>& adj, std::uint32_t i, const G& factor,
+                                   T sum, F&& f) const {
+        if (list != nullptr && list->covers(i)) {
+            const std::uint32_t k = i - list->first;
+            const Vec<D> xi = x[i];
+            const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
+            if (!list->periodic) {
+                for (std::uint32_t p = b; p < e; ++p) {
+                    const std::uint32_t j = list->j[p];
+                    const Vec<D> dx = xi - x[j];
+                    sum += f(j, dx, dx.squaredNorm(), list->factor[p]);
+                }
+            } else {
+                for (std::uint32_t p = b; p < e; ++p) {
+                    const std::uint32_t j = list->j[p];
+                    const Vec<D> dx = xi + list->shift[p] - x[j];
+                    sum += f(j, dx, dx.squaredNorm(), list->factor[p]);
+                }
+            }
+            return sum;
+        }
+        for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) {
+            sum += f(j, dx, r2, factor(r2));
+        });
+        return sum;
+    }
+
 private:
     // The listed pairs of i (the list must cover i): f(p, j, dx, r2), p the pair's index.
     template <class F>
@@ -124,43 +156,48 @@ public:
     // factor(r2) for every pair (see for_each_pair). For a centre i with partial(i) true,
     // only the neighbours j with wanted(j) are listed (the solver lists only fluid partners of
     // wall particles: nothing reads wall-wall pairs, and in 3-D they are half of all pairs).
+    // The wanted particles of every cell must come first in it (the solver's fluid particles
+    // have lower ids than its walls, and a cell is sorted by id), so a partial centre scans
+    // only that leading run: a wall particle deep in a wall scans almost nothing.
     template <class G, class Partial, class Wanted>
     SLUICE_FLATTEN void build_list(std::span<const CellIndex> group_cells, NeighbourList<D>& out,
                                    const G& factor, const Partial& partial,
                                    const Wanted& wanted) const {
         out.first = group_cells.empty() ? 0 : cells->begin[group_cells.front()];
-        // Size the buffers for every candidate pair first, so that the scan below writes
-        // without a capacity check per pair; they keep their capacity between steps.
         out.adjacent.resize(group_cells.size());
-        std::size_t bound = 0, n_particles = 0;
+        std::size_t n_particles = 0;
         for (std::size_t g = 0; g < group_cells.size(); ++g) {
-            const CellIndex c = group_cells[g];
-            out.adjacent[g] = adjacent(c);
-            std::size_t candidates = 0;
-            for (int k = 0; k < out.adjacent[g].count; ++k)
-                candidates +=
-                    end(out.adjacent[g].cell[k].cell) - begin(out.adjacent[g].cell[k].cell);
-            bound += candidates * (end(c) - begin(c));
-            n_particles += end(c) - begin(c);
+            out.adjacent[g] = adjacent(group_cells[g]);
+            n_particles += end(group_cells[g]) - begin(group_cells[g]);
         }
         const bool periodic = grid->any_periodic();
-        // Only ever grown: entries past the pairs found are stale and never read.
-        if (out.j.size() < bound) {
-            out.j.resize(bound);
-            out.factor.resize(bound); // holds r2 until the last loop turns it into the factor
-        }
-        if (periodic && out.shift.size() < bound)
-            out.shift.resize(bound);
         out.offset.resize(n_particles + 1);
         const Real support2 = support * support;
-        std::uint32_t* js = out.j.data();
-        Real* r2s = out.factor.data();
+        // The scan below writes every candidate and keeps a pair by advancing n, so there must
+        // be room for all candidates of a particle beyond n: checked once per particle (the
+        // buffers only grow, doubling, and keep their capacity between steps). Sizing for all
+        // candidates of the group at once would take ~1,700 entries per particle in 3-D.
+        const auto reserve = [&](std::size_t need) {
+            if (out.j.size() >= need)
+                return;
+            const std::size_t size = std::max(need, 2 * out.j.size());
+            out.j.resize(size);
+            out.factor.resize(size); // holds r2 until the last loop turns it into the factor
+            if (periodic)
+                out.shift.resize(size);
+        };
         std::size_t n = 0, row = 0;
         out.offset[0] = 0;
         for (std::size_t g = 0; g < group_cells.size(); ++g) {
             const CellIndex c = group_cells[g];
             const AdjacentCells<D>& adj = out.adjacent[g];
+            std::size_t candidates = 0;
+            for (int k = 0; k < adj.count; ++k)
+                candidates += end(adj.cell[k].cell) - begin(adj.cell[k].cell);
             for (std::uint32_t i = begin(c); i < end(c); ++i) {
+                reserve(n + candidates);
+                std::uint32_t* js = out.j.data();
+                Real* r2s = out.factor.data();
                 const Vec<D> xi = x[i];
                 const bool all = !partial(i);
                 for (int k = 0; k < adj.count; ++k) {
@@ -185,11 +222,11 @@ public:
                             n += r2 < support2 ? 1 : 0;
                         }
                     else
-                        for (std::uint32_t j = begin(nc); j < e; ++j) {
+                        for (std::uint32_t j = begin(nc); j < e && wanted(j); ++j) {
                             const Real r2 = (xis - x[j]).squaredNorm();
                             js[n] = j;
                             r2s[n] = r2;
-                            n += r2 < support2 && wanted(j) ? 1 : 0;
+                            n += r2 < support2 ? 1 : 0;
                         }
                 }
                 out.offset[++row] = static_cast<std::uint32_t>(n);
@@ -197,6 +234,7 @@ public:
         }
         out.pairs = n;
         out.periodic = periodic;
+        Real* r2s = out.factor.data();
         for (std::size_t p = 0; p < n; ++p)
             r2s[p] = factor(r2s[p]);
     }

@@ -40,17 +40,24 @@ SLUICE_FLATTEN void renormalised_density_gradient(const Neighbourhood<D>& nb, co
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
-        Mat<D> M = Mat<D>::Zero();
-        Vec<D> g = Vec<D>::Zero();
         const Real rho_i = P.rho[i];
-        nb.for_each_pair(adj, i, F, [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real Fij) {
-            if (P.kind[j] != Kind::fluid || r2 <= 0)
-                return;
-            const Vec<D> gradW = Fij * dx;
-            const Real Vj = P.mass[j] / P.rho[j];
-            M -= Vj * gradW * dx.transpose(); // x_j - x_i = -dx
-            g += (P.rho[j] - rho_i) * Vj * gradW;
-        });
+        // [M | g] summed together (see Neighbourhood::sum_over_pairs for why a fold).
+        using Sums = Eigen::Matrix<Real, D, D + 1>;
+        const Sums sums =
+            nb.sum_over_pairs(adj, i, F, Sums(Sums::Zero()),
+                              [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real Fij) -> Sums {
+                                  if (P.kind[j] != Kind::fluid || r2 <= 0)
+                                      return Sums::Zero();
+                                  const Real Vj = P.mass[j] / P.rho[j];
+                                  const Vec<D> VgradW = Vj * Fij * dx;
+                                  Sums pair;
+                                  pair.template leftCols<D>() =
+                                      -VgradW * dx.transpose(); // x_j - x_i = -dx
+                                  pair.col(D) = (P.rho[j] - rho_i) * VgradW;
+                                  return pair;
+                              });
+        const Mat<D> M = sums.template leftCols<D>();
+        const Vec<D> g = sums.col(D);
         // M is the identity for a full, regular support.
         grad_out[i] = std::abs(M.determinant()) > Real(1e-3) ? Vec<D>(M.inverse() * g) : g;
     }
@@ -96,26 +103,30 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
         const Real rho_i = P.rho[i];
         const Vec<D> v_i = vel[i];
         const Vec<D> g_i = P.grad_rho[i];
-        Real drho = 0, diffusion = 0;
-        nb.for_each_pair(adj, i, F, [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real Fij) {
-            if (r2 <= 0)
-                return;
-            const Vec<D> gradW = Fij * dx;
-            if (P.kind[j] == Kind::wall) {
-                drho += P.mass[j] * v_i.dot(gradW); // fixed wall: v_j = 0
-                return;
-            }
-            drho += P.mass[j] * (v_i - vel[j]).dot(gradW);
-            const Real Vj = P.volume[j];
-            if (antuono)
-                diffusion +=
-                    Vj * (-2 * (P.rho[j] - rho_i) * Fij - (g_i + P.grad_rho[j]).dot(gradW));
-            else if (fourtakas) {
-                const Real rho_h = -diff.hydrostatic_gradient.dot(dx); // dx = x_i - x_j
-                diffusion += Vj * (-2 * (P.rho[j] - rho_i - rho_h) * Fij);
-            }
-        });
-        drho_out[i] = drho + diff.delta_h_c0 * diffusion;
+        // (velocity divergence part, diffusion part), summed together (see
+        // Neighbourhood::sum_over_pairs for why a fold).
+        using Sums = Eigen::Matrix<Real, 2, 1>;
+        const Sums sums = nb.sum_over_pairs(
+            adj, i, F, Sums(Sums::Zero()),
+            [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real Fij) -> Sums {
+                if (r2 <= 0)
+                    return Sums::Zero();
+                const Vec<D> gradW = Fij * dx;
+                if (P.kind[j] == Kind::wall)
+                    return Sums(P.mass[j] * v_i.dot(gradW), 0); // fixed wall: v_j = 0
+                const Real div = P.mass[j] * (v_i - vel[j]).dot(gradW);
+                const Real Vj = P.volume[j];
+                Real diffusion = 0;
+                if (antuono) {
+                    diffusion =
+                        Vj * (-2 * (P.rho[j] - rho_i) * Fij - (g_i + P.grad_rho[j]).dot(gradW));
+                } else if (fourtakas) {
+                    const Real rho_h = -diff.hydrostatic_gradient.dot(dx); // dx = x_i - x_j
+                    diffusion = Vj * (-2 * (P.rho[j] - rho_i - rho_h) * Fij);
+                }
+                return Sums(div, diffusion);
+            });
+        drho_out[i] = sums[0] + diff.delta_h_c0 * sums[1];
     }
 }
 

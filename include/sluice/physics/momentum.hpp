@@ -44,34 +44,36 @@ SLUICE_FLATTEN void acceleration(const Neighbourhood<D>& nb, const K& kernel,
         const Real rho_i = P.rho[i];
         const Real p_over_rho2_i = P.p_over_rho2[i];
         const Vec<D> v_i = P.v[i];
-        Vec<D> acc = Vec<D>::Zero();
-        nb.for_each_pair(adj, i, F, [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real dWr) {
-            if (r2 <= 0)
-                return;
-            const Vec<D> gradW = dWr * dx;
-            const Real rho_j = P.rho[j];
-            const Real m_j = P.mass[j];
-            const bool wall = P.kind[j] == Kind::wall;
-            if (wall) {
-                const Real pi = std::max(P.p[i], prm.p_floor), pj = std::max(P.p[j], prm.p_floor);
-                acc -= m_j * (pi / (rho_i * rho_i) + pj / (rho_j * rho_j)) * gradW;
-            } else {
-                acc -= m_j * (p_over_rho2_i + P.p_over_rho2[j]) * gradW;
-            }
-
-            if (!wall || prm.wall_viscous) {
-                const Vec<D> v_ij = v_i - (wall ? P.v_bc[j] : P.v[j]);
-                if (two_mu > 0)
-                    acc += m_j * two_mu / (rho_i * rho_j) * (dWr * r2 / (r2 + eta2)) * v_ij;
-                if (av > 0) {
-                    const Real vr = v_ij.dot(dx);
-                    if (vr < 0) {
-                        const Real pi_ij = -av * vr / (r2 + eta2) / (Real(0.5) * (rho_i + rho_j));
-                        acc -= m_j * pi_ij * gradW;
+        const Vec<D> acc = nb.sum_over_pairs(
+            adj, i, F, Vec<D>(Vec<D>::Zero()),
+            [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real dWr) -> Vec<D> {
+                if (r2 <= 0)
+                    return Vec<D>::Zero();
+                const Vec<D> gradW = dWr * dx;
+                const Real rho_j = P.rho[j];
+                const Real m_j = P.mass[j];
+                const bool wall = P.kind[j] == Kind::wall;
+                Real s; // the pair's coefficient of -m_j grad W
+                if (wall) {
+                    const Real pi = std::max(P.p[i], prm.p_floor);
+                    const Real pj = std::max(P.p[j], prm.p_floor);
+                    s = pi / (rho_i * rho_i) + pj / (rho_j * rho_j);
+                } else {
+                    s = p_over_rho2_i + P.p_over_rho2[j];
+                }
+                Vec<D> pair = Vec<D>::Zero();
+                if (!wall || prm.wall_viscous) {
+                    const Vec<D> v_ij = v_i - (wall ? P.v_bc[j] : P.v[j]);
+                    if (two_mu > 0)
+                        pair = m_j * two_mu / (rho_i * rho_j) * (dWr * r2 / (r2 + eta2)) * v_ij;
+                    if (av > 0) {
+                        const Real vr = v_ij.dot(dx);
+                        if (vr < 0)
+                            s -= av * vr / ((r2 + eta2) * (Real(0.5) * (rho_i + rho_j)));
                     }
                 }
-            }
-        });
+                return pair - m_j * s * gradW;
+            });
         a_out[i] = acc + prm.gravity;
     }
 }
