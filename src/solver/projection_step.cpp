@@ -171,7 +171,9 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                     G.a[p] = wsum > 0 ? G.a[p] / wsum : 0;
                 d.row[i] = wsum > 0 ? PpeRow::wall : PpeRow::surface;
                 d.bhat[i] = wsum > 0 ? rhs / wsum : 0;
-                d.u_star[i] = P_.v[i];
+                // The wall row says dp/dn = rho0 g.n = rho0/dt (u*_w - u_w).n: the divergence
+                // of u* must see the same u*_w = u_w + dt g (docs/PROJECTION.md, "Walls").
+                d.u_star[i] = P_.v[i] + dt_ * momentum_.gravity;
                 continue;
             }
             if (P_.kind[i] == Kind::wall)
@@ -439,8 +441,12 @@ std::string Simulation<D>::solve_pressure(std::string& error) {
                 break;
             ++it;
             rnorm = std::sqrt(g[0]);
-            if (!std::isfinite(rnorm))
+            // Hybrid SOR is not guaranteed to converge for a non-symmetric system; stop early
+            // when it clearly diverges.
+            if (!std::isfinite(rnorm) || rnorm > 1e6 * bnorm) {
+                breakdown = "the sweep diverges; try a smaller projection.relaxation";
                 break;
+            }
             if (rnorm <= tol) {
                 converged = true;
                 break;
