@@ -497,14 +497,24 @@ void Simulation<D>::correct_stage(int group) {
             continue;
         }
         const std::uint32_t k = i - lo;
-        // P7 with the stabilised gradient (docs/PROJECTION.md, "Stabilised gradient").
+        // P7 with the stabilised gradient (docs/PROJECTION.md, "Stabilised gradient"): the
+        // reference is the smallest positive pressure around i (surface particles, at 0, are
+        // not a reference for their interior neighbours).
         Real p_ref = physics::gradient_pressure(P_.p[i]);
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            p_ref = std::min(p_ref, physics::gradient_pressure(P_.p[list.j[p]]));
+            p_ref = physics::gradient_reference(p_ref, P_.p[list.j[p]]);
         Vec<D> grad = Vec<D>::Zero();
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             grad += G.grad[p] * (physics::gradient_pressure(P_.p[list.j[p]]) - p_ref);
         Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, cfg_.rho0, dt_);
+        const Real collision = physics::wall_collision_distance_over_dx * cfg_.dx;
+        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
+            if (P_.kind[list.j[p]] == Kind::wall) {
+                Vec<D> offset = P_.x[list.j[p]] - P_.x[i];
+                if (list.periodic)
+                    offset -= list.shift[p];
+                v = physics::wall_collision<D>(v, offset, collision);
+            }
         Vec<D> x = P_.x[i] + dt_ * v;
         if (!planes_.empty()) {
             Vec<D> unused = v;

@@ -14,10 +14,12 @@
 //   P6 wall row         p_w - sum_f c_wf p_f = sum_f c_wf rho0 g.(x_w - x_f),
 //                       c_wf = w_wf / sum_f w_wf  (Adami et al. 2012 with a_w = 0)
 //   P7 correction       u^{n+1}_i = u*_i - dt/rho0 grad p_i
-//   P8 position         x^{n+1}_i = x^n_i + dt u^{n+1}_i
+//   P8 position         x^{n+1}_i = x^n_i + dt u^{n+1}_i, after the wall collision check
 // Every row of the scaled system has the form y_i - sum_j a_ij y_j, so one matrix-free
 // product serves fluid, surface and wall rows alike.
 #include "sluice/core/types.hpp"
+
+#include <algorithm>
 
 namespace sluice::physics {
 
@@ -46,18 +48,42 @@ Real wall_row_term(Real rho0, const Vec<D>& gravity, const Vec<D>& x_w_minus_x_f
 }
 
 // P7 uses the stabilised gradient (docs/PROJECTION.md, "Stabilised gradient"):
-//   grad p_i ~ sum_j c_ij (p'_j - phat_i),  p' = max(p, 0),  phat_i = min(p'_i, min_j p'_j),
+//   grad p_i ~ sum_j c_ij (p'_j - phat_i),  p' = max(p, 0),
+//   phat_i = min(p'_i, min {p'_j : p'_j > 0}),
 // Koshizuka & Oka's (1996) minimum-pressure reference applied to the WMLS coefficients c_ij.
 // It equals the WMLS gradient of p' plus (p'_i - phat_i) sum_j c_ij, a repulsion that
-// vanishes on a symmetric stencil; negative pressures (tension) are not applied, as in MPS.
+// vanishes on a symmetric stencil; negative pressures (tension) are not applied, as in MPS;
+// neighbours at p' = 0 (surface particles, clamped tension) are not taken as the reference,
+// so the rows just below the surface are not pushed towards it.
 inline Real gradient_pressure(Real p) {
     return p > 0 ? p : 0;
+}
+inline Real gradient_reference(Real current, Real p_neighbour) {
+    return p_neighbour > 0 ? std::min(current, p_neighbour) : current;
 }
 
 // P7.
 template <int D>
 Vec<D> corrected_velocity(const Vec<D>& u_star, const Vec<D>& grad_p, Real rho0, Real dt) {
     return u_star - dt / rho0 * grad_p;
+}
+
+// Wall collision (after Koshizuka et al. 1998's collision model, in PNU-MPS's spirit: seed
+// 004 notes its splashing particles need one). The walls act through the pressure only where
+// their rows see fluid pressure; above the free surface their extrapolated pressure is
+// negative and is not applied (P7), so nothing else keeps a splashing particle out of a wall.
+// A fluid particle closer than `distance` to a wall particle and moving towards it loses the
+// approaching component of its velocity (restitution 0). offset: x_wall - x_fluid.
+inline constexpr Real wall_collision_distance_over_dx = 0.8;
+
+template <int D>
+Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance) {
+    const Real r = offset.norm();
+    if (r >= distance || r == 0)
+        return v;
+    const Vec<D> e = offset / r;
+    const Real approach = v.dot(e);
+    return approach > 0 ? Vec<D>(v - approach * e) : v;
 }
 
 // Residual of one row of the scaled system: bhat_i - (y_i - sum_j a_ij y_j).
