@@ -34,7 +34,7 @@ namespace {
 const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"",
      {"case", "domain", "fluid", "particles", "blocks", "numerics", "walls", "time", "output",
-      "probes", "runtime", "neighbours", "checkpoint", "limits"}},
+      "probes", "runtime", "neighbours", "checkpoint", "limits", "projection"}},
     {"case", {"name", "description", "dimension"}},
     {"domain", {"lo", "hi", "periodic"}},
     {"fluid",
@@ -44,8 +44,9 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
      {"lo", "hi", "shape", "velocity", "profile", "amplitude", "angular_velocity", "strain_rate",
       "hydrostatic"}},
     {"numerics",
-     {"kernel", "h_over_dx", "density", "delta_sph", "density_diffusion", "artificial_viscosity",
-      "shifting", "cfl", "viscous_cfl", "force_cfl", "dt", "neighbour_skin"}},
+     {"scheme", "kernel", "h_over_dx", "density", "delta_sph", "density_diffusion",
+      "artificial_viscosity", "shifting", "cfl", "viscous_cfl", "force_cfl", "dt",
+      "neighbour_skin"}},
     {"walls",
      {"model", "tank_lo", "tank_hi", "tank_faces", "restitution", "no_slip", "planes", "boxes"}},
     {"walls.planes", {"point", "normal"}},
@@ -64,6 +65,8 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
      {"particles_per_group", "rebalance_threshold", "rebalance_window", "rebalance_every",
       "balance_cost", "initial_decomposition"}},
     {"checkpoint", {"every_steps", "every_minutes"}},
+    {"projection",
+     {"solver", "tolerance", "max_iterations", "relaxation", "gamma", "surface_diameter_over_dx"}},
     {"limits", {"max_speed", "min_density", "max_density"}},
 };
 const std::set<std::string, std::less<>> kArrayTables = {"blocks", "probes", "walls.planes",
@@ -600,6 +603,10 @@ const std::vector<std::pair<std::string, KernelType>> kKernels = {
     {"quintic", KernelType::quintic},
     {"wendland_c2", KernelType::wendland_c2},
     {"cubic_spline", KernelType::cubic_spline}};
+const std::vector<std::pair<std::string, Scheme>> kSchemes = {{"wcsph", Scheme::wcsph},
+                                                              {"projection", Scheme::projection}};
+const std::vector<std::pair<std::string, PressureSolver>> kPressureSolvers = {
+    {"bicgstab", PressureSolver::bicgstab}, {"sor", PressureSolver::sor}};
 const std::vector<std::pair<std::string, DensityScheme>> kDensity = {
     {"summation", DensityScheme::summation}, {"continuity", DensityScheme::continuity}};
 const std::vector<std::pair<std::string, DensityDiffusion>> kDiffusion = {
@@ -815,6 +822,7 @@ void check_block_thickness(const Section& root, const CaseConfig& c) {
 }
 
 void read_numerics(const Section& s, CaseConfig& c) {
+    c.scheme = s.choice("scheme", Scheme::wcsph, kSchemes);
     c.kernel = s.choice("kernel", KernelType::quintic, kKernels);
     c.h_over_dx = s.number("h_over_dx", 1.0);
     // Below 0.5 a particle has no neighbour; above 4 the support holds thousands of them.
@@ -849,6 +857,40 @@ void read_numerics(const Section& s, CaseConfig& c) {
     s.require(c.neighbour_skin >= 0 && c.neighbour_skin <= 2, "neighbour_skin",
               fmt::format("must be in [0, 2] (in units of dx; 0 = rebuild every step), got {}",
                           c.neighbour_skin));
+}
+
+// [projection]: refused with the WCSPH scheme, where it would silently do nothing.
+void read_projection(const Section& s, CaseConfig& c) {
+    if (c.scheme != Scheme::projection) {
+        for (const char* k : {"solver", "tolerance", "max_iterations", "relaxation", "gamma",
+                              "surface_diameter_over_dx"})
+            s.require(s.node(k) == nullptr, k,
+                      "applies only to numerics.scheme = \"projection\" (the scheme is "
+                      "\"wcsph\")");
+        return;
+    }
+    ProjectionSettings& p = c.projection;
+    p.solver = s.choice("solver", PressureSolver::bicgstab, kPressureSolvers);
+    p.tolerance = s.number("tolerance", 1e-8);
+    s.require(p.tolerance > 0 && p.tolerance < 1, "tolerance",
+              fmt::format("must be in (0, 1) (a relative residual), got {}", p.tolerance));
+    const auto iterations = s.integer("max_iterations").value_or(1000);
+    s.require(iterations >= 1 && iterations <= 1000000, "max_iterations",
+              fmt::format("must be between 1 and 1000000, got {}", iterations));
+    p.max_iterations = static_cast<int>(iterations);
+    p.relaxation = s.number("relaxation", 1.5);
+    s.require(p.relaxation > 0 && p.relaxation < 2, "relaxation",
+              fmt::format("must be in (0, 2) for SOR to converge, got {}", p.relaxation));
+    s.require(p.solver == PressureSolver::sor || s.node("relaxation") == nullptr, "relaxation",
+              "applies only to solver = \"sor\"");
+    p.gamma = s.number("gamma", 0.01);
+    s.require(p.gamma >= 0 && p.gamma <= 1, "gamma",
+              fmt::format("must be in [0, 1] (seed 004: gamma <= 1), got {}", p.gamma));
+    p.surface_diameter_over_dx = s.number("surface_diameter_over_dx", 2.1);
+    s.require(p.surface_diameter_over_dx >= 1 && p.surface_diameter_over_dx <= 4,
+              "surface_diameter_over_dx",
+              fmt::format("must be in [1, 4] lattice spacings (seed 004: 2.1), got {}",
+                          p.surface_diameter_over_dx));
 }
 
 void read_walls(const Section& s, CaseConfig& c) {
@@ -1245,7 +1287,14 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
     read_blocks(top, c);
     check_block_thickness(top, c);
     read_numerics(top.sub("numerics"), c);
+    read_projection(top.sub("projection"), c);
     read_walls(top.sub("walls"), c);
+    // The projection scheme's wall boundary condition lives on wall particles (Neumann rows of
+    // the pressure Poisson equation, docs/PROJECTION.md).
+    if (c.scheme == Scheme::projection && c.walls == WallModel::reflective)
+        top.sub("walls").require(false, "model",
+                                 "numerics.scheme = \"projection\" needs \"dummy\" walls (or "
+                                 "\"none\"): its wall pressure condition lives on wall particles");
     check_blocks_in_tank(top, c);
     read_time(top.sub("time"), c);
     read_output(top.sub("output"), c);

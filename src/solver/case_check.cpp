@@ -99,7 +99,8 @@ std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& in
         g_norm += g[a] * g[a];
     }
     g_norm = std::sqrt(g_norm);
-    if (g_norm > 0 && !cfg.blocks.empty()) {
+    // (The projection scheme is incompressible: c0 only bounds the speed there.)
+    if (g_norm > 0 && !cfg.blocks.empty() && cfg.scheme == Scheme::wcsph) {
         Triple up{};
         for (std::size_t a = 0; a < dim; ++a)
             up[a] = -g[a] / g_norm;

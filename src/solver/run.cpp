@@ -386,6 +386,9 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             progress.finish();
             throw InternalError(std::string(e.what()) + where);
         }
+        if (const PressureSolveRecord* ps = sim.last_pressure_solve())
+            log.debug("step {}: pressure solve {} iterations, relative residual {:.3e}, {:.2f} ms",
+                      sim.steps(), ps->iterations, ps->residual, ps->seconds * 1e3);
         const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
         progress.update(sim.steps(), sim.time(), sim.dt(),
                         static_cast<double>(total_particles) *
@@ -435,6 +438,11 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     }
     if (!opts.trace_path.empty())
         sim.write_trace(opts.trace_path);
+    if (const PressureSolveTotals* pt = sim.pressure_solve_totals(); pt && pt->solves > 0)
+        log.info("pressure solves: {} steps, {:.1f} iterations per step on average, at most {}; "
+                 "largest final relative residual {:.3e}; {:.3f} s in the solver",
+                 pt->solves, static_cast<double>(pt->iterations) / static_cast<double>(pt->solves),
+                 pt->max_iterations, pt->max_residual, pt->seconds);
     log.info("done: {} steps to t = {:.6g} s in {:.2f} s wall, {:.3g} particle-steps/s, {} "
              "decompositions, {} rebalances",
              result.steps, result.simulated_time, result.wall_seconds,
@@ -506,7 +514,9 @@ CaseInfo describe_case(const CaseConfig& cfg) {
         vmax = std::max(vmax, block_max_speed(b, cfg.dimension));
     const TimeStepParams prm{info.h, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl,
                              cfg.force_cfl};
-    const TimeStepLimits l = particle_time_step(prm, cfg.sound_speed, vmax, std::sqrt(g));
+    // The projection scheme has no acoustic limit (docs/PROJECTION.md).
+    const double c = cfg.scheme == Scheme::projection ? 0.0 : cfg.sound_speed;
+    const TimeStepLimits l = particle_time_step(prm, c, vmax, std::sqrt(g));
     info.dt_acoustic = l.acoustic;
     info.dt_viscous = l.viscous;
     info.dt_force = l.force;
@@ -526,16 +536,25 @@ CaseInfo describe_case(const CaseConfig& cfg) {
     auto& ph = info.physics;
     ph.push_back(fmt::format("kernel: {}, h = {:.4g} m ({} dx)", kernel_name(cfg.kernel), info.h,
                              cfg.h_over_dx));
-    if (cfg.density == DensityScheme::summation)
+    if (cfg.scheme == Scheme::projection)
+        ph.push_back(fmt::format(
+            "scheme: incompressible projection (WMLS operators, PPE by {}, tolerance {:g}, "
+            "gamma {:g})",
+            cfg.projection.solver == PressureSolver::sor
+                ? fmt::format("SOR, relaxation {:g}", cfg.projection.relaxation)
+                : std::string("BiCGSTAB + Jacobi"),
+            cfg.projection.tolerance, cfg.projection.gamma));
+    else if (cfg.density == DensityScheme::summation)
         ph.push_back("density: summation");
     else
         ph.push_back(cfg.delta_sph > 0 ? fmt::format("density: continuity + delta-SPH (delta = {})",
                                                      cfg.delta_sph)
                                        : std::string("density: continuity"));
-    ph.push_back(
-        cfg.eos == EosType::linear
-            ? fmt::format("EOS: linear, c0 = {} m/s", cfg.sound_speed)
-            : fmt::format("EOS: Tait (gamma = {}), c0 = {} m/s", cfg.gamma, cfg.sound_speed));
+    if (cfg.scheme == Scheme::wcsph)
+        ph.push_back(
+            cfg.eos == EosType::linear
+                ? fmt::format("EOS: linear, c0 = {} m/s", cfg.sound_speed)
+                : fmt::format("EOS: Tait (gamma = {}), c0 = {} m/s", cfg.gamma, cfg.sound_speed));
     if (cfg.background_pressure != 0)
         ph.push_back(fmt::format("background pressure: {} Pa", cfg.background_pressure));
     if (cfg.viscosity > 0)

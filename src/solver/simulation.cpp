@@ -7,6 +7,7 @@
 #include "sluice/physics/shifting.hpp"
 
 #include "particle_messages.hpp"
+#include "projection_data.hpp"
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -70,7 +71,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
       opts_(std::move(opts)), comm_(tasks::Comm::world()) {
     h_ = cfg.h_over_dx * cfg.dx;
     const double support = kernel_support_factor(cfg.kernel) * h_;
-    skin_ = cfg.neighbour_skin * cfg.dx;
+    // The projection step builds its own lists every step (its operators use another radius).
+    skin_ = cfg.scheme == Scheme::projection ? 0.0 : cfg.neighbour_skin * cfg.dx;
     eos_ = Eos{cfg.eos, cfg.rho0, cfg.sound_speed, cfg.gamma, cfg.background_pressure};
 
     momentum_.gravity = to_vec<D>(cfg.gravity);
@@ -182,6 +184,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_,
                                             density_gradient_, skin_ > 0);
     window_busy_.assign(static_cast<std::size_t>(comm_.size()), 0.0);
+    if (cfg.scheme == Scheme::projection)
+        init_projection();
 
     // A restart sorts, distributes and groups the particles by the positions of the last
     // rebuild, so that the Verlet lists of its first step are those of the interrupted run and
@@ -236,7 +240,9 @@ TimeStepLimits Simulation<D>::limits_at_rest() const {
     Real vmax = 0;
     for (std::size_t i = 0; i < P_.size(); ++i)
         vmax = std::max(vmax, P_.v[i].norm());
-    return particle_time_step(ts_params_, cfg_.sound_speed, vmax, std::sqrt(g));
+    // The projection scheme has no acoustic limit: only the flow speed enters its CFL.
+    const double c = cfg_.scheme == Scheme::projection ? 0.0 : cfg_.sound_speed;
+    return particle_time_step(ts_params_, c, vmax, std::sqrt(g));
 }
 
 template <int D>
@@ -517,6 +523,10 @@ bool Simulation<D>::rebalance() {
 
 template <int D>
 void Simulation<D>::build_graph() {
+    if (proj_) {
+        build_projection_graph();
+        return;
+    }
     using tasks::Reach;
     std::vector<tasks::StageSpec> specs;
     stage_kinds_.clear();
@@ -710,7 +720,10 @@ void Simulation<D>::step() {
     try {
         // A throwing task does not stop the graph: its messages still go out, so every rank
         // completes the step and learns of the error in the reduction below.
-        graph_->run();
+        if (proj_)
+            run_projection();
+        else
+            graph_->run();
     } catch (const std::exception& e) {
         task_error = e.what();
     }

@@ -85,6 +85,21 @@ expect_refused block_outside "blocks\[0\].hi"
 make_case end_time 's/^end_time = 0.4$/end_time = 0/'
 expect_refused end_time "time.end_time"
 
+# The scheme and the projection settings (docs/CASE_REFERENCE.md, [projection]).
+cp valid.toml scheme.toml
+expect_refused scheme "numerics.scheme" --set 'numerics.scheme="incompressible"'
+cp valid.toml projection_key.toml
+expect_refused projection_key "projection.gamma" --set projection.gamma=0.5
+cp valid.toml projection_gamma.toml
+expect_refused projection_gamma "projection.gamma" --set 'numerics.scheme="projection"' \
+    --set projection.gamma=2
+cp valid.toml projection_solver.toml
+expect_refused projection_solver "projection.solver" --set 'numerics.scheme="projection"' \
+    --set 'projection.solver="cg"'
+cp valid.toml projection_relaxation.toml
+expect_refused projection_relaxation "projection.relaxation" \
+    --set 'numerics.scheme="projection"' --set projection.relaxation=1.2
+
 # A bad override is refused the same way.
 cp valid.toml override.toml
 expect_refused override "numerics.kernal" --set numerics.kernal=quintic

@@ -18,6 +18,11 @@ enum class InitialDecomposition { balanced, key_range };
 using Triple = std::array<double, 3>;
 
 enum class KernelType { quintic, wendland_c2, cubic_spline };
+// How a step advances the flow: weakly compressible SPH (explicit, EOS pressure) or the
+// incompressible projection scheme of seed 004 (implicit pressure Poisson equation with WMLS
+// operators; docs/PROJECTION.md).
+enum class Scheme { wcsph, projection };
+enum class PressureSolver { bicgstab, sor };
 enum class DensityScheme { summation, continuity };
 // Form of the delta-SPH density diffusion term (docs/CASE_REFERENCE.md, [numerics]).
 enum class DensityDiffusion { antuono, fourtakas };
@@ -79,6 +84,16 @@ struct OperatorNeighbours {
     NeighbourSelection gradient, laplacian, free_surface;
 };
 
+// [projection]: the pressure Poisson solve of the projection scheme (docs/PROJECTION.md).
+struct ProjectionSettings {
+    PressureSolver solver = PressureSolver::bicgstab;
+    double tolerance = 1e-8; // relative residual of the row-scaled system
+    int max_iterations = 1000;
+    double relaxation = 1.5; // SOR relaxation factor (seed 004: 1.5)
+    double gamma = 0.01;     // relaxation of the density-deviation source term (seed 004: <= 1)
+    double surface_diameter_over_dx = 2.1; // Dilts arc circle (seed 004: 2.1 l0)
+};
+
 struct CaseConfig {
     std::string source_file; // path of the TOML file (for messages)
     std::string name;        // case name; default: file stem
@@ -103,6 +118,7 @@ struct CaseConfig {
     std::vector<FluidBlock> blocks;
 
     // [numerics]
+    Scheme scheme = Scheme::wcsph;
     KernelType kernel = KernelType::quintic;
     double h_over_dx = 1.0; // smoothing length h = h_over_dx * dx
     DensityScheme density = DensityScheme::continuity;
@@ -117,6 +133,9 @@ struct CaseConfig {
     // Verlet skin in units of dx: neighbour lists hold pairs within support + skin and are
     // rebuilt (with the particle sort) only when a particle has moved more than skin/2.
     double neighbour_skin = 0.5;
+
+    // [projection] (scheme = projection only)
+    ProjectionSettings projection;
 
     // [walls]
     WallModel walls = WallModel::none;

@@ -14,6 +14,7 @@
 #include "sluice/physics/timestep.hpp"
 #include "sluice/physics/walls.hpp"
 #include "sluice/solver/halo_fields.hpp"
+#include "sluice/solver/pressure_solve.hpp"
 #include "sluice/solver/state_check.hpp"
 #include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
@@ -24,6 +25,7 @@
 
 #include <tbb/task_arena.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -62,6 +64,9 @@ struct BalanceSample {
     long step = 0;
     double imbalance = 0;
 };
+
+template <int D>
+struct ProjectionData; // src/solver/projection_data.hpp
 
 // A WCSPH simulation on this rank: its particles (plus halo copies of its neighbours'), the
 // grid, and the step graph that advances them. On several MPI ranks every rank holds one of
@@ -132,6 +137,11 @@ public:
     [[nodiscard]] const std::vector<double>& stage_busy_seconds() const { return stage_busy_; }
     [[nodiscard]] std::vector<std::string> stage_names() const;
 
+    // Projection scheme (docs/PROJECTION.md): the last step's pressure solve and totals over
+    // the run; null with the WCSPH scheme.
+    [[nodiscard]] const PressureSolveRecord* last_pressure_solve() const;
+    [[nodiscard]] const PressureSolveTotals* pressure_solve_totals() const;
+
     // Seconds spent in rebinning and re-decomposition between steps, summed over the run.
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
 
@@ -151,6 +161,17 @@ private:
     void run_stage_with(const K& kernel, int stage, int group);
 
     enum class StageKind { density, walls, accel, kick, drift };
+
+    // Projection scheme (src/solver/projection_step.cpp).
+    void init_projection();
+    void build_projection_graph();
+    void run_projection();
+    template <class K>
+    void projection_stage(const K& kernel, int stage, int group);
+    void solver_stage(int stage, int group);
+    void correct_stage(int group);
+    std::string solve_pressure(std::string& error); // non-empty: did not converge
+    std::array<double, 7> reduce_partials(int count, bool failed_here);
 
     CaseConfig cfg_;
     Particles<D> P_;
@@ -227,6 +248,9 @@ private:
     std::vector<RebalanceRecord> rebalances_;
     std::vector<BalanceSample> balance_history_;
     bool force_regroup_ = false;
+
+    // Last member: its graphs live in arena_ and are destroyed first.
+    std::unique_ptr<ProjectionData<D>> proj_;
 };
 
 extern template class Simulation<2>;

@@ -1,0 +1,94 @@
+#pragma once
+// Formulas of the incompressible projection step (seed 004, Park et al. 2014, section 2.3,
+// after the PNU-MPS algorithm of Lee et al. 2011; docs/PROJECTION.md derives each one).
+// The seed's equations (12)-(16) are missing from its text; the numbers P1-P8 below are those
+// of docs/PROJECTION.md.
+//
+//   P1 predictor        u*_i = u^n_i + dt (nu lap u_i + g)
+//   P2 PPE              lap p_i = b_i
+//   P3 source           b_i = rho0/dt div u*_i + gamma rho0/dt^2 (n0 - n_i)/n0
+//   P4 scaled row       p_i - sum_j a_ij p_j = bhat_i,  a_ij = L_ij / S_i,  bhat_i = -b_i / S_i,
+//                       S_i = sum_j L_ij  (L: WMLS Laplacian coefficients, lap f_i =
+//                       sum_j L_ij (f_j - f_i))
+//   P5 surface row      p_i = 0
+//   P6 wall row         p_w - sum_f c_wf p_f = sum_f c_wf rho0 g.(x_w - x_f),
+//                       c_wf = w_wf / sum_f w_wf  (Adami et al. 2012 with a_w = 0)
+//   P7 correction       u^{n+1}_i = u*_i - dt/rho0 grad p_i
+//   P8 position         x^{n+1}_i = x^n_i + dt u^{n+1}_i, after the wall collision check
+// Every row of the scaled system has the form y_i - sum_j a_ij y_j, so one matrix-free
+// product serves fluid, surface and wall rows alike.
+#include "sluice/core/types.hpp"
+
+#include <algorithm>
+
+namespace sluice::physics {
+
+// P1.
+template <int D>
+Vec<D> predicted_velocity(const Vec<D>& u, const Vec<D>& laplacian_u, Real nu,
+                          const Vec<D>& gravity, Real dt) {
+    return u + dt * (nu * laplacian_u + gravity);
+}
+
+// P3. div_u_star: WMLS divergence of u*; n: particle number density sum_{j != i} w(r_ij);
+// n0: its value on the full lattice.
+inline Real ppe_source(Real rho0, Real dt, Real gamma, Real div_u_star, Real n, Real n0) {
+    return rho0 / dt * div_u_star + gamma * rho0 / (dt * dt) * (n0 - n) / n0;
+}
+
+// A fluid row whose Laplacian coefficients sum to S <= this fraction of the lattice value is
+// treated as a surface row (P5): with S near zero the scaled row P4 would be singular. A
+// full stencil has S of order 2 D (2 + D) / re^2 (docs/PROJECTION.md).
+inline constexpr Real ppe_min_diagonal_fraction = 1e-3;
+
+// P6: the constant of a wall row from one fluid neighbour, before division by sum_f w_wf.
+template <int D>
+Real wall_row_term(Real rho0, const Vec<D>& gravity, const Vec<D>& x_w_minus_x_f) {
+    return rho0 * gravity.dot(x_w_minus_x_f);
+}
+
+// P7 uses the stabilised gradient (docs/PROJECTION.md, "Stabilised gradient"):
+//   grad p_i ~ sum_j c_ij (p'_j - phat_i),  p' = max(p, 0),
+//   phat_i = min(p'_i, min {p'_j : p'_j > 0}),
+// Koshizuka & Oka's (1996) minimum-pressure reference applied to the WMLS coefficients c_ij.
+// It equals the WMLS gradient of p' plus (p'_i - phat_i) sum_j c_ij, a repulsion that
+// vanishes on a symmetric stencil; negative pressures (tension) are not applied, as in MPS;
+// neighbours at p' = 0 (surface particles, clamped tension) are not taken as the reference,
+// so the rows just below the surface are not pushed towards it.
+inline Real gradient_pressure(Real p) {
+    return p > 0 ? p : 0;
+}
+inline Real gradient_reference(Real current, Real p_neighbour) {
+    return p_neighbour > 0 ? std::min(current, p_neighbour) : current;
+}
+
+// P7.
+template <int D>
+Vec<D> corrected_velocity(const Vec<D>& u_star, const Vec<D>& grad_p, Real rho0, Real dt) {
+    return u_star - dt / rho0 * grad_p;
+}
+
+// Wall collision (after Koshizuka et al. 1998's collision model, in PNU-MPS's spirit: seed
+// 004 notes its splashing particles need one). The walls act through the pressure only where
+// their rows see fluid pressure; above the free surface their extrapolated pressure is
+// negative and is not applied (P7), so nothing else keeps a splashing particle out of a wall.
+// A fluid particle closer than `distance` to a wall particle and moving towards it loses the
+// approaching component of its velocity (restitution 0). offset: x_wall - x_fluid.
+inline constexpr Real wall_collision_distance_over_dx = 0.8;
+
+template <int D>
+Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance) {
+    const Real r = offset.norm();
+    if (r >= distance || r == 0)
+        return v;
+    const Vec<D> e = offset / r;
+    const Real approach = v.dot(e);
+    return approach > 0 ? Vec<D>(v - approach * e) : v;
+}
+
+// Residual of one row of the scaled system: bhat_i - (y_i - sum_j a_ij y_j).
+inline Real row_residual(Real bhat, Real y_i, Real sum_a_y) {
+    return bhat - (y_i - sum_a_y);
+}
+
+} // namespace sluice::physics

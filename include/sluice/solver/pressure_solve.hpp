@@ -1,0 +1,28 @@
+#pragma once
+// What the pressure Poisson solve of the projection scheme reports (docs/PROJECTION.md).
+#include <algorithm>
+
+namespace sluice {
+
+struct PressureSolveRecord {
+    int iterations = 0;  // BiCGSTAB iterations (two operator products each) or SOR sweeps
+    double residual = 0; // final |bhat - A p| / |bhat| of the row-scaled system (recomputed)
+    double seconds = 0;  // wall time of the solve on this rank
+};
+
+struct PressureSolveTotals {
+    long solves = 0;
+    long iterations = 0;
+    int max_iterations = 0;
+    double max_residual = 0;
+    double seconds = 0;
+    void add(const PressureSolveRecord& r) {
+        ++solves;
+        iterations += r.iterations;
+        max_iterations = std::max(max_iterations, r.iterations);
+        max_residual = std::max(max_residual, r.residual);
+        seconds += r.seconds;
+    }
+};
+
+} // namespace sluice

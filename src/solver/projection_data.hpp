@@ -1,0 +1,145 @@
+#pragma once
+// State of the projection scheme (docs/PROJECTION.md) that lives beside a Simulation<D>: the
+// per-pair WMLS coefficients of this step, the per-particle rows of the pressure Poisson
+// equation, the Krylov/SOR vectors, the solver's own step graphs and the halo data of the
+// fields they exchange. Private to src/solver.
+#include "sluice/core/particles.hpp"
+#include "sluice/physics/ls_weight.hpp"
+#include "sluice/solver/halo_fields.hpp"
+#include "sluice/solver/pressure_solve.hpp"
+#include "sluice/tasks/step_graph.hpp"
+
+#include <array>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace sluice {
+
+// What a row of the scaled pressure system says (docs/PROJECTION.md, P4-P6).
+enum class PpeRow : std::uint8_t { fluid, surface, wall };
+
+// Per cell group, aligned with the group's neighbour list (pair p of lists_[g]).
+template <int D>
+struct ProjectionGroup {
+    std::vector<Real> lap;    // WMLS Laplacian coefficient L_ij (fluid rows)
+    std::vector<Vec<D>> grad; // WMLS gradient coefficient (fluid rows)
+    std::vector<Real> a;      // coefficient a_ij of the scaled system (every row)
+    std::vector<Vec<D>> scratch_offsets;
+    std::vector<std::uint32_t> scratch_pairs;
+    std::array<double, 6> partial{}; // reduction partials of the last solver run, this group
+};
+
+// The fields the projection scheme exchanges between ranks, besides the state at the start of
+// the step (delegated to HaloFields). Each exchange copies one per-particle array for the
+// particles of the halo cells, in the same order as the state exchange.
+template <int D>
+class ProjectionHalo final : public tasks::HaloData {
+public:
+    struct Field {
+        Real* scalar = nullptr;   // one Real per particle, or
+        Vec<D>* vector = nullptr; // one Vec<D> per particle; null = the state (HaloFields)
+    };
+    std::vector<Field> fields; // per exchange of the graph
+
+    ProjectionHalo(HaloFields<D>& state, CellRanges& ranges, const HaloPlan& plan)
+        : state_(state), ranges_(ranges), plan_(plan) {}
+
+    [[nodiscard]] std::size_t recv_bytes(int e, int p) const override {
+        const Field& f = fields[static_cast<std::size_t>(e)];
+        if (f.scalar == nullptr && f.vector == nullptr)
+            return state_.recv_bytes(0, p);
+        return plan_.recv_count[static_cast<std::size_t>(p)] *
+               (f.scalar != nullptr ? sizeof(Real) : sizeof(Vec<D>));
+    }
+
+    void pack(int e, int p, tasks::Bytes& out) override {
+        const Field& f = fields[static_cast<std::size_t>(e)];
+        if (f.scalar == nullptr && f.vector == nullptr) {
+            state_.pack(0, p, out);
+            return;
+        }
+        const auto k = static_cast<std::size_t>(p);
+        out.reserve(plan_.send_count[k] * (f.scalar != nullptr ? sizeof(Real) : sizeof(Vec<D>)));
+        for (CellIndex c : plan_.send_cells[k])
+            for (std::uint32_t i = ranges_.begin[c]; i < ranges_.end[c]; ++i) {
+                if (f.scalar != nullptr)
+                    tasks::put(out, f.scalar[i]);
+                else
+                    tasks::put(out, f.vector[i]);
+            }
+    }
+
+    void unpack(int e, int p, std::span<const std::byte> in) override {
+        const Field& f = fields[static_cast<std::size_t>(e)];
+        if (f.scalar == nullptr && f.vector == nullptr) {
+            state_.unpack(0, p, in);
+            return;
+        }
+        const auto k = static_cast<std::size_t>(p);
+        const std::size_t first = plan_.recv_offset[k], last = first + plan_.recv_count[k];
+        std::size_t pos = 0;
+        for (std::size_t i = first; i < last; ++i) {
+            if (f.scalar != nullptr)
+                tasks::take_into(in, pos, f.scalar[i]);
+            else
+                tasks::take_into(in, pos, f.vector[i]);
+        }
+    }
+
+private:
+    HaloFields<D>& state_;
+    CellRanges& ranges_;
+    const HaloPlan& plan_;
+};
+
+// What a solver graph run does (set by the main thread before each run).
+enum class SolverPhase {
+    residual,  // y = x; r = bhat - A y, rhat = r; partials (r,r), (bhat,bhat)
+    bicg_dir,  // [x += omega s; r = s - omega t; partial (r,r)]; p = r + beta (p - omega v);
+               // y = p; v = A y; partial (rhat, v)
+    bicg_half, // s = r - alpha v; x += alpha p; y = s; t = A y;
+               // partials (t,s), (t,t), (rhat,s), (rhat,t), (s,s)
+    sor_sweep, // y = x; Gauss-Seidel/SOR sweep inside the group, y across groups; partial r^2
+    set_zero   // x = 0 (the right-hand side vanishes)
+};
+
+template <int D>
+struct ProjectionData {
+    // Per particle (owned and halo).
+    std::vector<Vec<D>> u_star;
+    std::vector<Real> bhat, number_density, y;
+    std::vector<PpeRow> row;
+    // Per owned particle: solver vectors (x is Particles::p).
+    std::vector<Real> r, rhat, dir, v, s, t;
+
+    std::vector<ProjectionGroup<D>> groups;
+    std::unique_ptr<ProjectionHalo<D>> main_halo, solver_halo, correct_halo;
+    std::unique_ptr<tasks::StepGraph> solver_graph, correct_graph;
+
+    SolverPhase phase = SolverPhase::residual;
+    bool first_direction = true;
+    double alpha = 0, beta = 0, omega = 0;
+    bool failed = false; // a task of this step threw: later stages do nothing
+
+    Real re = 0;          // WMLS influence radius (the kernel support)
+    Real n0 = 0;          // particle number density of the full lattice
+    Real lattice_sum = 0; // S = sum_j L_ij of the full lattice
+    Real surface_diameter = 0;
+    physics::LsWeight weight = physics::LsWeight::pnu_mps;
+
+    PressureSolveRecord last; // the last step's solve
+    PressureSolveTotals totals;
+
+    void resize(std::size_t n) {
+        u_star.resize(n, Vec<D>::Zero());
+        bhat.resize(n, 0);
+        number_density.resize(n, 0);
+        y.resize(n, 0);
+        row.resize(n, PpeRow::surface);
+        for (auto* f : {&r, &rhat, &dir, &v, &s, &t})
+            f->resize(n, 0);
+    }
+};
+
+} // namespace sluice

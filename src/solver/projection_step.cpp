@@ -1,0 +1,607 @@
+// The projection scheme's binding to the runtime (docs/PROJECTION.md): its stages as nodes of
+// step graphs, the matrix-free pressure solvers (BiCGSTAB, SOR) as repeated runs of a small
+// solver graph with the iterate exchanged between ranks, and the global reductions. The
+// formulas are in include/sluice/physics/projection.hpp and wmls.hpp.
+#include "sluice/io/errors.hpp"
+#include "sluice/physics/free_surface.hpp"
+#include "sluice/physics/integrator.hpp"
+#include "sluice/physics/projection.hpp"
+#include "sluice/physics/wmls.hpp"
+#include "sluice/solver/simulation.hpp"
+
+#include "projection_data.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fmt/format.h>
+
+namespace sluice {
+
+namespace {
+
+// Offsets of the full lattice of spacing dx within re of a particle, itself excluded.
+template <int D>
+std::vector<Vec<D>> lattice_offsets(Real dx, Real re) {
+    std::vector<Vec<D>> out;
+    const int m = static_cast<int>(std::ceil(re / dx));
+    std::array<int, 3> k{};
+    const int n = 2 * m + 1;
+    const int total = D == 2 ? n * n : n * n * n;
+    for (int idx = 0; idx < total; ++idx) {
+        int r = idx;
+        Vec<D> o;
+        for (int d = 0; d < D; ++d) {
+            k[static_cast<std::size_t>(d)] = r % n - m;
+            r /= n;
+            o[d] = k[static_cast<std::size_t>(d)] * dx;
+        }
+        const Real len = o.norm();
+        if (len > 0 && len < re)
+            out.push_back(o);
+    }
+    return out;
+}
+
+} // namespace
+
+template <int D>
+void Simulation<D>::init_projection() {
+    proj_ = std::make_unique<ProjectionData<D>>();
+    ProjectionData<D>& d = *proj_;
+    d.re = kernel_support_factor(cfg_.kernel) * h_;
+    d.surface_diameter = cfg_.projection.surface_diameter_over_dx * cfg_.dx;
+    const std::vector<Vec<D>> lattice = lattice_offsets<D>(cfg_.dx, d.re);
+    for (const Vec<D>& o : lattice)
+        d.n0 += physics::ls_weight(o.norm(), d.re, d.weight);
+    const auto st = physics::wmls_stencil<D>(lattice, d.re, d.weight);
+    d.lattice_sum = st.laplacian.sum();
+    // Incompressible: every fluid particle keeps rho0 and the volume dx^D.
+    const Real volume = std::pow(cfg_.dx, D);
+    for (std::size_t i = 0; i < P_.size(); ++i)
+        if (P_.kind[i] == Kind::fluid) {
+            P_.rho[i] = cfg_.rho0;
+            P_.mass[i] = cfg_.rho0 * volume;
+        }
+    d.main_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
+    d.solver_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
+    d.correct_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
+}
+
+template <int D>
+void Simulation<D>::build_projection_graph() {
+    using tasks::Reach;
+    ProjectionData<D>& d = *proj_;
+    const std::size_t groups = topo_.neighbours.size();
+    group_limits_.assign(groups, {});
+    group_failure_.assign(groups, {});
+    group_speed_.assign(groups, 0.0);
+    lists_.resize(groups);
+    group_busy_.assign(groups, 0.0);
+    d.groups.resize(groups);
+    graph_steps_ = 0;
+
+    tasks::HaloWiring main, solver, correct;
+    if (comm_.parallel()) {
+        halo_->what.assign(1, HaloFields<D>::What::state); // ProjectionHalo delegates exchange 0
+        const auto boundary = boundary_groups();
+        for (tasks::HaloWiring* w : {&main, &solver, &correct}) {
+            w->peers = peers_;
+            w->boundary = boundary;
+        }
+        main.exchanges = {{"state", -1}, {"u_star", 0}};
+        main.data = d.main_halo.get();
+        solver.exchanges = {{"iterate", 0}};
+        solver.data = d.solver_halo.get();
+        correct.exchanges = {{"pressure", -1}};
+        correct.data = d.correct_halo.get();
+    }
+    // The old graphs live in the arena too.
+    graph_.reset();
+    d.solver_graph.reset();
+    d.correct_graph.reset();
+    graph_ = std::make_unique<tasks::StepGraph>(
+        std::vector<tasks::StageSpec>{{"stencil", Reach::neighbourhood},
+                                      {"ppe_source", Reach::neighbourhood}},
+        topo_.neighbours,
+        [this](int stage, int group) {
+            std::visit([&](const auto& k) { projection_stage(k, stage, group); }, kernel_);
+        },
+        std::move(main), arena_.get());
+    d.solver_graph = std::make_unique<tasks::StepGraph>(
+        std::vector<tasks::StageSpec>{{"ppe_prepare", Reach::self},
+                                      {"ppe_apply", Reach::neighbourhood}},
+        topo_.neighbours, [this](int stage, int group) { solver_stage(stage, group); },
+        std::move(solver), arena_.get());
+    d.correct_graph = std::make_unique<tasks::StepGraph>(
+        std::vector<tasks::StageSpec>{{"correct", Reach::neighbourhood}}, topo_.neighbours,
+        [this](int, int group) { correct_stage(group); }, std::move(correct), arena_.get());
+    for (tasks::StepGraph* g : {graph_.get(), d.solver_graph.get(), d.correct_graph.get()})
+        g->inject_receive_delay(receive_delay_);
+}
+
+// Stage 0 "stencil": neighbour list, WMLS coefficients, free surface, number density, wall
+// rows (P6) and the predictor (P1). Stage 1 "ppe_source": the source (P3) and the scaled
+// fluid rows (P4, P5); it reads the neighbours' u*.
+template <int D>
+template <class K>
+void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
+    ProjectionData<D>& d = *proj_;
+    if (d.failed)
+        return;
+    const auto gi = static_cast<std::size_t>(group);
+    Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x), kernel.support()};
+    NeighbourList<D>& list = lists_[gi];
+    ProjectionGroup<D>& G = d.groups[gi];
+    const auto& cells = topo_.cells[gi];
+    const Real re = d.re;
+    const physics::LsWeight weight = d.weight;
+    if (stage == 0) {
+        nb.build_list(
+            cells, list,
+            [re, weight](Real r2) { return physics::ls_weight(std::sqrt(r2), re, weight); },
+            [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; },
+            [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; });
+        G.lap.resize(list.pairs);
+        G.grad.resize(list.pairs);
+        G.a.resize(list.pairs);
+    }
+    const auto offset_of = [&](std::uint32_t i, std::uint32_t p) -> Vec<D> {
+        // x_j - x_i with the periodic image of j nearest to i.
+        Vec<D> dx = P_.x[i] - P_.x[list.j[p]];
+        if (list.periodic)
+            dx += list.shift[p];
+        return -dx;
+    };
+    for (CellIndex c : cells)
+        for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+            const std::uint32_t k = i - list.first;
+            const std::uint32_t b = list.offset[k], e = list.offset[k + 1];
+            if (stage == 0 && P_.kind[i] == Kind::wall) {
+                // P6: Adami's extrapolation as a row of the system, smooth weights.
+                Real wsum = 0, rhs = 0;
+                for (std::uint32_t p = b; p < e; ++p) {
+                    const Vec<D> off = offset_of(i, p);
+                    const Real w = physics::ls_weight(off.norm(), re, physics::LsWeight::smooth);
+                    G.a[p] = w;
+                    wsum += w;
+                    rhs += w * physics::wall_row_term<D>(cfg_.rho0, momentum_.gravity, -off);
+                }
+                for (std::uint32_t p = b; p < e; ++p)
+                    G.a[p] = wsum > 0 ? G.a[p] / wsum : 0;
+                d.row[i] = wsum > 0 ? PpeRow::wall : PpeRow::surface;
+                d.bhat[i] = wsum > 0 ? rhs / wsum : 0;
+                // The wall row says dp/dn = rho0 g.n = rho0/dt (u*_w - u_w).n: the divergence
+                // of u* must see the same u*_w = u_w + dt g (docs/PROJECTION.md, "Walls").
+                d.u_star[i] = P_.v[i] + dt_ * momentum_.gravity;
+                continue;
+            }
+            if (P_.kind[i] == Kind::wall)
+                continue;
+            if (stage == 0) {
+                G.scratch_offsets.clear();
+                G.scratch_pairs.clear();
+                Real n = 0;
+                for (std::uint32_t p = b; p < e; ++p) {
+                    G.lap[p] = 0;
+                    G.grad[p].setZero();
+                    if (list.j[p] == i)
+                        continue;
+                    G.scratch_offsets.push_back(offset_of(i, p));
+                    G.scratch_pairs.push_back(p);
+                    n += list.factor[p];
+                }
+                d.number_density[i] = n;
+                const std::span<const Vec<D>> offsets(G.scratch_offsets);
+                const auto st = physics::wmls_stencil<D>(offsets, re, weight);
+                Vec<D> lap_u = Vec<D>::Zero();
+                for (std::size_t m = 0; m < G.scratch_pairs.size(); ++m) {
+                    const std::uint32_t p = G.scratch_pairs[m];
+                    G.lap[p] = st.laplacian(0, static_cast<Eigen::Index>(m));
+                    G.grad[p] = st.gradient.col(static_cast<Eigen::Index>(m));
+                    lap_u += G.lap[p] * (P_.v[list.j[p]] - P_.v[i]);
+                }
+                const bool surface =
+                    !st.ok || physics::is_free_surface<D>(offsets, d.surface_diameter);
+                d.row[i] = surface ? PpeRow::surface : PpeRow::fluid;
+                // A stencil that cannot fit second derivatives gives no viscous term.
+                d.u_star[i] = physics::predicted_velocity<D>(
+                    P_.v[i], st.ok ? lap_u : Vec<D>::Zero(), cfg_.viscosity / cfg_.rho0,
+                    momentum_.gravity, dt_);
+                continue;
+            }
+            // Stage 1.
+            Real sum = 0, div = 0;
+            for (std::uint32_t p = b; p < e; ++p) {
+                sum += G.lap[p];
+                div += G.grad[p].dot(d.u_star[list.j[p]] - d.u_star[i]);
+            }
+            if (d.row[i] == PpeRow::fluid &&
+                sum <= physics::ppe_min_diagonal_fraction * d.lattice_sum)
+                d.row[i] = PpeRow::surface;
+            if (d.row[i] == PpeRow::surface) {
+                for (std::uint32_t p = b; p < e; ++p)
+                    G.a[p] = 0;
+                d.bhat[i] = 0;
+                continue;
+            }
+            const Real src = physics::ppe_source(cfg_.rho0, dt_, cfg_.projection.gamma, div,
+                                                 d.number_density[i], d.n0);
+            for (std::uint32_t p = b; p < e; ++p)
+                G.a[p] = G.lap[p] / sum;
+            d.bhat[i] = -src / sum;
+        }
+}
+
+// One node of the solver graph: stage 0 prepares the vector y that stage 1 multiplies by the
+// scaled operator (docs/PROJECTION.md, "Solvers"). Partial dot products are summed per group
+// in particle order.
+template <int D>
+void Simulation<D>::solver_stage(int stage, int group) {
+    ProjectionData<D>& d = *proj_;
+    const auto gi = static_cast<std::size_t>(group);
+    ProjectionGroup<D>& G = d.groups[gi];
+    if (stage == 0)
+        G.partial.fill(0);
+    if (d.failed)
+        return;
+    const NeighbourList<D>& list = lists_[gi];
+    const std::uint32_t lo = list.first;
+    const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
+    std::vector<Real>& x = P_.p;
+    auto& q = G.partial;
+    if (stage == 0) {
+        for (std::uint32_t i = lo; i < hi; ++i)
+            switch (d.phase) {
+            case SolverPhase::residual:
+            case SolverPhase::sor_sweep:
+                d.y[i] = x[i];
+                break;
+            case SolverPhase::set_zero:
+                x[i] = 0;
+                d.y[i] = 0;
+                break;
+            case SolverPhase::bicg_dir:
+                if (d.first_direction) {
+                    d.dir[i] = d.r[i];
+                } else {
+                    x[i] += d.omega * d.s[i];
+                    d.r[i] = d.s[i] - d.omega * d.t[i];
+                    q[0] += d.r[i] * d.r[i];
+                    d.dir[i] = d.r[i] + d.beta * (d.dir[i] - d.omega * d.v[i]);
+                }
+                d.y[i] = d.dir[i];
+                break;
+            case SolverPhase::bicg_half:
+                d.s[i] = d.r[i] - d.alpha * d.v[i];
+                x[i] += d.alpha * d.dir[i];
+                d.y[i] = d.s[i];
+                break;
+            }
+        return;
+    }
+    if (d.phase == SolverPhase::set_zero)
+        return;
+    const bool sor = d.phase == SolverPhase::sor_sweep;
+    const Real omega = cfg_.projection.relaxation;
+    for (std::uint32_t i = lo; i < hi; ++i) {
+        const std::uint32_t k = i - lo;
+        Real sum = 0;
+        if (sor) {
+            // Gauss-Seidel order inside the group (x already updated for j < i), the previous
+            // sweep's values (y) across group and rank boundaries: results do not depend on
+            // the order in which groups run.
+            for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p) {
+                const std::uint32_t j = list.j[p];
+                sum += G.a[p] * (j >= lo && j < hi ? x[j] : d.y[j]);
+            }
+            const Real res = physics::row_residual(d.bhat[i], x[i], sum);
+            x[i] += omega * res;
+            q[0] += res * res;
+            continue;
+        }
+        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
+            sum += G.a[p] * d.y[list.j[p]];
+        const Real ay = d.y[i] - sum;
+        switch (d.phase) {
+        case SolverPhase::residual:
+            d.r[i] = d.bhat[i] - ay;
+            d.rhat[i] = d.r[i];
+            q[0] += d.r[i] * d.r[i];
+            q[1] += d.bhat[i] * d.bhat[i];
+            break;
+        case SolverPhase::bicg_dir:
+            d.v[i] = ay;
+            q[1] += d.rhat[i] * ay;
+            break;
+        case SolverPhase::bicg_half:
+            d.t[i] = ay;
+            q[0] += ay * d.s[i];
+            q[1] += ay * ay;
+            q[2] += d.rhat[i] * d.s[i];
+            q[3] += d.rhat[i] * ay;
+            q[4] += d.s[i] * d.s[i];
+            break;
+        default:
+            break;
+        }
+    }
+}
+
+template <int D>
+std::array<double, 7> Simulation<D>::reduce_partials(int count, bool failed_here) {
+    // Per group in group order, then across ranks in rank order: every rank gets the same
+    // numbers, so every rank takes the same decisions (iterate, stop, fail).
+    std::array<double, 7> sum{};
+    for (const auto& G : proj_->groups)
+        for (int k = 0; k < count; ++k)
+            sum[static_cast<std::size_t>(k)] += G.partial[static_cast<std::size_t>(k)];
+    sum[6] = failed_here ? 1.0 : 0.0;
+    if (!comm_.parallel())
+        return sum;
+    const double t0 = tasks::clock_seconds();
+    const auto all = comm_.all_gather(
+        std::span<const std::byte>(reinterpret_cast<const std::byte*>(sum.data()), sizeof(sum)));
+    between_.push_back({"solver reduce", -1, true, sizeof(sum), t0, tasks::clock_seconds()});
+    std::array<double, 7> global{};
+    for (const auto& b : all) {
+        std::array<double, 7> part{};
+        std::memcpy(part.data(), b.data(), sizeof(part));
+        for (std::size_t k = 0; k < 6; ++k)
+            global[k] += part[k];
+        global[6] = std::max(global[6], part[6]);
+    }
+    return global;
+}
+
+template <int D>
+std::string Simulation<D>::solve_pressure(std::string& error) {
+    ProjectionData<D>& d = *proj_;
+    const ProjectionSettings& ps = cfg_.projection;
+    const auto t0 = std::chrono::steady_clock::now();
+    bool failed = false;
+    const auto run = [&](SolverPhase phase, int count) {
+        d.phase = phase;
+        try {
+            d.solver_graph->run();
+        } catch (const std::exception& e) {
+            if (error.empty())
+                error = e.what();
+            d.failed = true;
+        }
+        const auto g = reduce_partials(count, !error.empty());
+        if (g[6] > 0) {
+            d.failed = true;
+            failed = true;
+        }
+        return g;
+    };
+    PressureSolveRecord rec;
+    auto g = run(SolverPhase::residual, 2);
+    const double bnorm = std::sqrt(g[1]);
+    const double tol = ps.tolerance * bnorm;
+    double rnorm = std::sqrt(g[0]);
+    bool converged = rnorm <= tol;
+    std::string breakdown;
+    if (!failed && bnorm == 0) {
+        run(SolverPhase::set_zero, 0);
+        converged = true;
+    }
+    int it = 0;
+    if (!failed && !converged && ps.solver == PressureSolver::bicgstab) {
+        // BiCGSTAB (van der Vorst 1992) on the row-scaled system, i.e. with the Jacobi
+        // preconditioner applied from the left. (rhat, r_new) follows from the identity
+        // (rhat, s - omega t) = (rhat, s) - omega (rhat, t); the true |r| is summed when r is
+        // formed, at the start of the next direction update.
+        double rho = g[0];
+        d.first_direction = true;
+        while (true) {
+            g = run(SolverPhase::bicg_dir, 2);
+            if (failed)
+                break;
+            if (!d.first_direction) {
+                rnorm = std::sqrt(g[0]);
+                if (rnorm <= tol) {
+                    converged = true;
+                    break;
+                }
+            }
+            if (it >= ps.max_iterations)
+                break;
+            d.first_direction = false;
+            if (g[1] == 0 || !std::isfinite(g[1])) {
+                breakdown = "(rhat, v) = 0";
+                break;
+            }
+            d.alpha = rho / g[1];
+            g = run(SolverPhase::bicg_half, 5);
+            if (failed)
+                break;
+            ++it;
+            const double snorm = std::sqrt(std::max(0.0, g[4]));
+            if (snorm <= tol) { // x already holds x + alpha p
+                rnorm = snorm;
+                converged = true;
+                break;
+            }
+            if (!(g[1] > 0) || g[0] == 0) {
+                breakdown = "omega = 0";
+                break;
+            }
+            d.omega = g[0] / g[1];
+            const double rho_new = g[2] - d.omega * g[3];
+            d.beta = (rho_new / rho) * (d.alpha / d.omega);
+            rho = rho_new;
+        }
+    }
+    if (!failed && !converged && ps.solver == PressureSolver::sor) {
+        while (it < ps.max_iterations) {
+            g = run(SolverPhase::sor_sweep, 1);
+            if (failed)
+                break;
+            ++it;
+            rnorm = std::sqrt(g[0]);
+            // Hybrid SOR is not guaranteed to converge for a non-symmetric system; stop early
+            // when it clearly diverges.
+            if (!std::isfinite(rnorm) || rnorm > 1e6 * bnorm) {
+                breakdown = "the sweep diverges; try a smaller projection.relaxation";
+                break;
+            }
+            if (rnorm <= tol) {
+                converged = true;
+                break;
+            }
+        }
+    }
+    if (!failed) {
+        // The reported residual is recomputed from the final iterate, not the recursion's.
+        g = run(SolverPhase::residual, 2);
+        rec.residual = bnorm > 0 ? std::sqrt(g[0]) / bnorm : std::sqrt(g[0]);
+    }
+    rec.iterations = it;
+    rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    d.last = rec;
+    if (!failed && !converged) {
+        const char* name = ps.solver == PressureSolver::sor ? "SOR" : "BiCGSTAB";
+        return fmt::format(
+            "the pressure Poisson solve ({}) did not converge at step {}, t = {:.6g} s: "
+            "relative residual {:.3e} after {} iterations, tolerance {:.3e}{}; raise "
+            "projection.max_iterations, loosen projection.tolerance or reduce the time step",
+            name, steps_ + 1, time_ + dt_, rec.residual, it, ps.tolerance,
+            breakdown.empty() ? std::string() : fmt::format(" (breakdown: {})", breakdown));
+    }
+    if (!failed)
+        d.totals.add(rec);
+    return {};
+}
+
+// Stage "correct": velocity correction (P7) and position update (P8), state checks and the
+// time-step limits of the next step.
+template <int D>
+void Simulation<D>::correct_stage(int group) {
+    ProjectionData<D>& d = *proj_;
+    const auto gi = static_cast<std::size_t>(group);
+    const NeighbourList<D>& list = lists_[gi];
+    const ProjectionGroup<D>& G = d.groups[gi];
+    const std::uint32_t lo = list.first;
+    const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
+    TimeStepLimits lim;
+    Real speed = 0;
+    std::string failure;
+    const Real g_norm = momentum_.gravity.norm();
+    for (std::uint32_t i = lo; i < hi; ++i) {
+        if (P_.kind[i] != Kind::fluid || d.failed) {
+            P_.x_next[i] = P_.x[i];
+            P_.v_next[i] = P_.v[i];
+            P_.rho_next[i] = P_.rho[i];
+            continue;
+        }
+        const std::uint32_t k = i - lo;
+        // P7 with the stabilised gradient (docs/PROJECTION.md, "Stabilised gradient"): the
+        // reference is the smallest positive pressure around i (surface particles, at 0, are
+        // not a reference for their interior neighbours).
+        Real p_ref = physics::gradient_pressure(P_.p[i]);
+        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
+            p_ref = physics::gradient_reference(p_ref, P_.p[list.j[p]]);
+        Vec<D> grad = Vec<D>::Zero();
+        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
+            grad += G.grad[p] * (physics::gradient_pressure(P_.p[list.j[p]]) - p_ref);
+        Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, cfg_.rho0, dt_);
+        const Real collision = physics::wall_collision_distance_over_dx * cfg_.dx;
+        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
+            if (P_.kind[list.j[p]] == Kind::wall) {
+                Vec<D> offset = P_.x[list.j[p]] - P_.x[i];
+                if (list.periodic)
+                    offset -= list.shift[p];
+                v = physics::wall_collision<D>(v, offset, collision);
+            }
+        Vec<D> x = P_.x[i] + dt_ * v;
+        if (!planes_.empty()) {
+            Vec<D> unused = v;
+            reflect(planes_, cfg_.restitution, x, unused, v);
+        }
+        grid_.wrap(x);
+        P_.a[i] = (v - P_.v[i]) / dt_;
+        P_.v_half[i] = v;
+        P_.x_next[i] = x;
+        P_.v_next[i] = v;
+        P_.rho_next[i] = P_.rho[i];
+        // No acoustic limit; the force limit sees at least gravity, which the predictor
+        // integrates explicitly.
+        lim =
+            min(lim, particle_time_step(ts_params_, 0, v.norm(), std::max(P_.a[i].norm(), g_norm)));
+        speed = std::max(speed, v.norm());
+        if (failure.empty()) {
+            const std::string what = state_fault(bounds_, x, v, P_.rho[i]);
+            if (!what.empty())
+                failure = fmt::format("particle {} reached {} at step {}, t = {:.6g} s: x = [{}], "
+                                      "v = [{}]",
+                                      P_.id[i], what, steps_ + 1, time_ + dt_,
+                                      fmt::join(x.data(), x.data() + D, ", "),
+                                      fmt::join(v.data(), v.data() + D, ", "));
+        }
+    }
+    group_limits_[gi] = lim;
+    group_speed_[gi] = speed;
+    group_failure_[gi] = std::move(failure);
+}
+
+template <int D>
+void Simulation<D>::run_projection() {
+    ProjectionData<D>& d = *proj_;
+    d.resize(P_.size());
+    d.failed = false;
+    d.main_halo->fields = {{}, {nullptr, d.u_star.data()}};
+    d.solver_halo->fields = {{d.y.data(), nullptr}};
+    d.correct_halo->fields = {{P_.p.data(), nullptr}};
+    for (tasks::StepGraph* g : {d.solver_graph.get(), d.correct_graph.get()})
+        g->inject_receive_delay(receive_delay_);
+    // A task that throws must not leave peers waiting: every rank runs every graph and every
+    // reduction of the solve; the error is raised after the last one.
+    std::string error;
+    try {
+        graph_->run();
+    } catch (const std::exception& e) {
+        error = e.what();
+        d.failed = true;
+    }
+    const std::string unconverged = solve_pressure(error);
+    try {
+        d.correct_graph->run();
+    } catch (const std::exception& e) {
+        if (error.empty())
+            error = e.what();
+    }
+    // Every rank has the same message (the decision came from global sums); the step's
+    // reduction raises it as a RunError.
+    if (!unconverged.empty() && !group_failure_.empty())
+        group_failure_[0] = unconverged;
+    if (!error.empty())
+        throw std::runtime_error(error);
+}
+
+template <int D>
+const PressureSolveRecord* Simulation<D>::last_pressure_solve() const {
+    return proj_ ? &proj_->last : nullptr;
+}
+
+template <int D>
+const PressureSolveTotals* Simulation<D>::pressure_solve_totals() const {
+    return proj_ ? &proj_->totals : nullptr;
+}
+
+#define SLUICE_PROJECTION_MEMBERS(D)                                                               \
+    template void Simulation<D>::init_projection();                                                \
+    template void Simulation<D>::build_projection_graph();                                         \
+    template void Simulation<D>::run_projection();                                                 \
+    template void Simulation<D>::solver_stage(int, int);                                           \
+    template void Simulation<D>::correct_stage(int);                                               \
+    template std::string Simulation<D>::solve_pressure(std::string&);                              \
+    template std::array<double, 7> Simulation<D>::reduce_partials(int, bool);                      \
+    template const PressureSolveRecord* Simulation<D>::last_pressure_solve() const;                \
+    template const PressureSolveTotals* Simulation<D>::pressure_solve_totals() const;
+SLUICE_PROJECTION_MEMBERS(2)
+SLUICE_PROJECTION_MEMBERS(3)
+#undef SLUICE_PROJECTION_MEMBERS
+
+} // namespace sluice

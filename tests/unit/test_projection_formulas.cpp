@@ -1,0 +1,55 @@
+// The projection scheme's formulas (include/sluice/physics/projection.hpp, docs/PROJECTION.md).
+#include "sluice/physics/projection.hpp"
+
+#include <doctest/doctest.h>
+
+using namespace sluice;
+using namespace sluice::physics;
+
+TEST_CASE("source term: divergence part and density-deviation part (P3)") {
+    const Real rho0 = 1000, dt = 1e-3;
+    // A divergence of 1/s needs lap p = rho0/dt.
+    CHECK(ppe_source(rho0, dt, 0.0, 1.0, 10.0, 10.0) == doctest::Approx(1e6));
+    // Compression (n > n0) gives a negative source: a pressure maximum pushes particles apart.
+    CHECK(ppe_source(rho0, dt, 0.5, 0.0, 11.0, 10.0) == doctest::Approx(-0.5 * 1e9 * 0.1));
+    // gamma = 0: the density deviation is ignored.
+    CHECK(ppe_source(rho0, dt, 0.0, 0.0, 11.0, 10.0) == 0.0);
+}
+
+TEST_CASE("wall row term is rho0 g.(x_w - x_f): a wall below the fluid carries more pressure") {
+    const Vec<2> g(0, -9.81);
+    CHECK(wall_row_term<2>(1000, g, Vec<2>(0, -0.01)) == doctest::Approx(98.1));
+    CHECK(wall_row_term<2>(1000, g, Vec<2>(0.01, 0)) == 0.0);
+}
+
+TEST_CASE("stabilised gradient: tension clamped, zero pressures are no reference") {
+    CHECK(gradient_pressure(-5) == 0.0);
+    CHECK(gradient_pressure(7) == 7.0);
+    CHECK(gradient_reference(100, 0) == 100.0);  // a surface neighbour is skipped
+    CHECK(gradient_reference(100, -3) == 100.0); // so is clamped tension
+    CHECK(gradient_reference(100, 40) == 40.0);
+}
+
+TEST_CASE("wall collision removes only the approaching velocity within the distance") {
+    const Real d = 0.008;
+    const Vec<2> wall(0.005, 0); // x_wall - x_fluid
+    // Approaching along the offset: normal part removed, tangential kept.
+    const Vec<2> v = wall_collision<2>(Vec<2>(2, 1), wall, d);
+    CHECK(v[0] == doctest::Approx(0));
+    CHECK(v[1] == doctest::Approx(1));
+    // Receding: unchanged.
+    CHECK(wall_collision<2>(Vec<2>(-2, 1), wall, d) == Vec<2>(-2, 1));
+    // Beyond the distance: unchanged.
+    CHECK(wall_collision<2>(Vec<2>(2, 1), Vec<2>(0.01, 0), d) == Vec<2>(2, 1));
+}
+
+TEST_CASE("predictor and correction (P1, P7) and the scaled row residual") {
+    const Vec<2> u =
+        predicted_velocity<2>(Vec<2>(1, 0), Vec<2>(2, 0), 1e-6, Vec<2>(0, -9.81), 1e-3);
+    CHECK(u[0] == doctest::Approx(1 + 1e-3 * 2e-6));
+    CHECK(u[1] == doctest::Approx(-9.81e-3));
+    // The hydrostatic gradient rho0 g cancels gravity's step.
+    const Vec<2> c = corrected_velocity<2>(Vec<2>(0, -9.81e-3), Vec<2>(0, -9810), 1000, 1e-3);
+    CHECK(c.norm() == doctest::Approx(0).epsilon(1e-12));
+    CHECK(row_residual(3, 5, 4) == 2.0);
+}
