@@ -966,6 +966,10 @@ void read_walls(const Section& s, CaseConfig& c) {
         c.planes.push_back(w);
     }
 
+    // Boxes are shells of dummy particles `layers` sites deep (as the tank's walls); their sum
+    // is held to the particle limit here, before anything is allocated.
+    const double layers = std::ceil(kernel_support_factor(c.kernel) * c.h_over_dx);
+    double box_particles = 0;
     for (const auto& b : s.entries("boxes")) {
         b.require(c.walls == WallModel::dummy, "lo",
                   "wall boxes are made of dummy wall particles: they need walls.model = \"dummy\"");
@@ -1007,6 +1011,18 @@ void read_walls(const Section& s, CaseConfig& c) {
         for (std::size_t j = 0; j < c.blocks.size(); ++j)
             b.require(!boxes_overlap(box.lo, box.hi, c.blocks[j].lo, c.blocks[j].hi, dim, eps),
                       "lo", fmt::format("the box overlaps the fluid of blocks[{}]", j));
+        double all = 1, deep = 1; // lattice sites of the box, and those below its shell
+        for (std::size_t a = 0; a < dim; ++a) {
+            const double n = std::max(1.0, std::round((box.hi[a] - box.lo[a]) / c.dx));
+            all *= n;
+            deep *= std::max(0.0, n - 2 * layers);
+        }
+        box_particles += all - deep;
+        b.require(box_particles <= max_case_particles, "hi",
+                  fmt::format("the wall boxes would hold about {:.3g} particles (their surface "
+                              "{:g} lattice sites deep), above the limit of {:.0f} million; "
+                              "increase dx or make the boxes smaller",
+                              box_particles, layers, max_case_particles / 1e6));
         c.boxes.push_back(box);
     }
 }

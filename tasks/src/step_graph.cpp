@@ -1,5 +1,7 @@
 #include "sluice/tasks/step_graph.hpp"
 
+#include "tsan_sync.hpp"
+
 #include <mpi.h>
 #include <tbb/concurrent_queue.h>
 #include <tbb/flow_graph.h>
@@ -19,6 +21,11 @@ std::chrono::steady_clock::time_point& clock_origin() {
     return t0;
 }
 constexpr int kTagBase = 1000; // tags kTagBase + exchange index
+// ThreadSanitizer's start-of-run token (tsan_sync.hpp): released by the main thread before a
+// run, acquired by every task before it reads anything, even its own captures (which the main
+// thread wrote when it built the graph). The edges from the start node order every task after
+// the start of the run anyway; TSan needs to know it before a task has read its slot.
+char run_start_token;
 } // namespace
 
 double clock_seconds() {
@@ -36,12 +43,37 @@ struct StepGraph::Impl {
     std::vector<std::unique_ptr<Node>> sends; // exchange * peers + peer
     std::vector<std::unique_ptr<Node>> recvs; // exchange * peers + peer
     tbb::concurrent_queue<int> ready;         // packed sends, by (exchange * peers + peer)
-    std::atomic<int> running{0};              // tasks executing right now
-    std::atomic<std::size_t> finished{0};     // nodes of this run that have completed
-    std::size_t total = 0;                    // nodes in the graph
+    // Both counters are relaxed: what orders the tasks is the graph's edges and, for the main
+    // thread, wait_for_all(). A stronger order here would also hide a missing edge from
+    // ThreadSanitizer (tasks that happen to run one after the other would look ordered).
+    std::atomic<int> running{0};          // tasks executing right now (sets the poll rate)
+    std::atomic<std::size_t> finished{0}; // nodes of this run that have completed
+    std::size_t total = 0;                // nodes in the graph
+
+    // ThreadSanitizer's view of the edges (tsan_sync.hpp), by task slot (as records_): a
+    // task's own token is &waits_for[slot], and waits_for[slot] lists its predecessors'.
+    std::vector<std::vector<const void*>> waits_for;
+    [[nodiscard]] const void* token(std::size_t slot) const { return &waits_for[slot]; }
+    void begin_task(std::size_t slot) const {
+        for (const void* t : waits_for[slot])
+            tsan::acquire(t);
+    }
+    void end_task(std::size_t slot) const { tsan::release(token(slot)); }
+    // The main thread, after wait_for_all(): every task of the run happened before. So did
+    // what oneTBB's header code did after a body (forwarding to successors, recycling the
+    // task), up to the task's decrement of the graph's reference count, which wait_for_all()
+    // waits on inside libtbb.so; an increment and decrement of it here let TSan see that too.
+    void join_tasks() const {
+        for (std::size_t slot = 0; slot < waits_for.size(); ++slot)
+            tsan::acquire(token(slot));
+        if constexpr (tsan::active) {
+            graph->reserve_wait();
+            graph->release_wait();
+        }
+    }
 
     void node_done() {
-        if (finished.fetch_add(1) + 1 == total)
+        if (finished.fetch_add(1, std::memory_order_relaxed) + 1 == total)
             finished.notify_one();
     }
 };
@@ -49,7 +81,7 @@ struct StepGraph::Impl {
 void StepGraph::guard(const std::function<void()>& f) {
     // A failing body must not cancel the graph: its sends would never leave and the peers
     // would wait forever. The error is kept and rethrown once the step's messages are done.
-    ++impl_->running;
+    impl_->running.fetch_add(1, std::memory_order_relaxed);
     try {
         f();
     } catch (...) {
@@ -57,7 +89,7 @@ void StepGraph::guard(const std::function<void()>& f) {
         if (!error_)
             error_ = std::current_exception();
     }
-    --impl_->running;
+    impl_->running.fetch_sub(1, std::memory_order_relaxed);
     impl_->node_done();
 }
 
@@ -83,6 +115,7 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
     records_.assign(n + 2 * m, {});
     send_buf_.assign(m, {});
     recv_buf_.assign(m, {});
+    impl_->waits_for.assign(n + 2 * m, {});
 
     // Boundary work is the critical path between ranks: a peer waits for what these tasks
     // produce. Their tasks (and packing, unpacking) go before interior ones whenever both are
@@ -105,23 +138,34 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                 impl_->nodes.push_back(std::make_unique<Node>(
                     *g,
                     [this, s, grp, slot](const continue_msg&) {
+                        tsan::acquire(&run_start_token);
+                        impl_->begin_task(slot);
                         const double t0 = clock_seconds();
                         guard([&] { body_(s, grp); });
                         record(slot, s, grp, -1, t0);
+                        impl_->end_task(slot);
                     },
                     facing_any[static_cast<std::size_t>(grp)] ? boundary : interior));
             }
-        auto node = [&](int s, int grp) -> Node& {
-            return *impl_->nodes[static_cast<std::size_t>(s * groups_ + grp)];
+        auto slot_of = [&](int s, int grp) { return static_cast<std::size_t>(s * groups_ + grp); };
+        auto node = [&](int s, int grp) -> Node& { return *impl_->nodes[slot_of(s, grp)]; };
+        // Every edge goes through here, so that ThreadSanitizer learns the same edges.
+        auto edge = [&](auto& from, const void* from_token, Node& to, std::size_t to_slot) {
+            tbb::flow::make_edge(from, to);
+            impl_->waits_for[to_slot].push_back(from_token);
         };
+        const void* start_token = &run_start_token;
         for (int grp = 0; grp < groups_; ++grp)
-            tbb::flow::make_edge(*impl_->start, node(0, grp));
+            edge(*impl_->start, start_token, node(0, grp), slot_of(0, grp));
+        auto after_node = [&](int s, int grp, Node& to, std::size_t to_slot) {
+            edge(node(s, grp), impl_->token(slot_of(s, grp)), to, to_slot);
+        };
         for (int s = 1; s < stage_count(); ++s)
             for (int grp = 0; grp < groups_; ++grp) {
-                tbb::flow::make_edge(node(s - 1, grp), node(s, grp));
+                after_node(s - 1, grp, node(s, grp), slot_of(s, grp));
                 if (stages_[static_cast<std::size_t>(s)].reach == Reach::neighbourhood)
                     for (int nb : neighbours_[static_cast<std::size_t>(grp)])
-                        tbb::flow::make_edge(node(s - 1, nb), node(s, grp));
+                        after_node(s - 1, nb, node(s, grp), slot_of(s, grp));
             }
         for (int e = 0; e < E; ++e)
             for (int p = 0; p < P; ++p) {
@@ -131,8 +175,11 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                 impl_->sends.push_back(std::make_unique<Node>(
                     *g,
                     [this, e, p, k, n, after](const continue_msg&) {
+                        tsan::acquire(&run_start_token);
+                        impl_->begin_task(n + k);
                         if (after < 0) {
                             impl_->node_done(); // packed and sent by the main thread
+                            impl_->end_task(n + k);
                             return;
                         }
                         const double t0 = clock_seconds();
@@ -141,32 +188,47 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                             halo_.data->pack(e, p, send_buf_[k]);
                         });
                         record(n + k, -1, p, e, t0);
+                        tsan::release(&send_buf_[k]); // the main thread posts it
                         impl_->ready.push(static_cast<int>(k));
+                        impl_->end_task(n + k);
                     },
                     urgent));
                 // One predecessor more than the edges: the main thread's "message arrived".
                 impl_->recvs.push_back(std::make_unique<Node>(
                     *g, 1,
                     [this, e, p, k, n, m](const continue_msg&) {
+                        tsan::acquire(&run_start_token);
+                        impl_->begin_task(n + m + k);
                         const double t0 = clock_seconds();
                         guard([&] { halo_.data->unpack(e, p, recv_buf_[k]); });
                         record(n + m + k, -2, p, e, t0);
+                        impl_->end_task(n + m + k);
                     },
                     urgent));
                 Node& send = *impl_->sends.back();
                 Node& recv = *impl_->recvs.back();
+                // The main thread's "message arrived" (the receive buffer is filled) is the
+                // release of &recv_buf_[k] just before it puts to the receive node.
+                impl_->waits_for[n + m + k].push_back(&recv_buf_[k]);
                 if (after < 0 || facing.empty()) {
-                    tbb::flow::make_edge(*impl_->start, send);
+                    edge(*impl_->start, start_token, send, n + k);
                 } else {
                     for (int grp : facing)
-                        tbb::flow::make_edge(node(after, grp), send);
+                        after_node(after, grp, send, n + k);
                 }
                 if (after >= 0)
                     for (int grp : facing)
-                        tbb::flow::make_edge(node(after, grp), recv);
+                        after_node(after, grp, recv, n + m + k);
+                // The facing groups' next stage waits for the message and, because it may
+                // overwrite their particles that the pack reads, for the pack too.
                 if (after + 1 < stage_count())
-                    for (int grp : facing)
-                        tbb::flow::make_edge(recv, node(after + 1, grp));
+                    for (int grp : facing) {
+                        edge(recv, impl_->token(n + m + k), node(after + 1, grp),
+                             slot_of(after + 1, grp));
+                        if (after >= 0)
+                            edge(send, impl_->token(n + k), node(after + 1, grp),
+                                 slot_of(after + 1, grp));
+                    }
             }
     };
     if (arena != nullptr)
@@ -207,8 +269,10 @@ void StepGraph::run() {
 
 void StepGraph::run_local() {
     auto go = [&] {
+        tsan::release(&run_start_token);
         impl_->start->try_put(continue_msg());
         impl_->graph->wait_for_all();
+        impl_->join_tasks();
     };
     if (impl_->arena != nullptr)
         impl_->arena->execute(go);
@@ -262,6 +326,7 @@ void StepGraph::run_with_messages() {
             post_send(k);
         }
     }
+    tsan::release(&run_start_token);
     impl_->start->try_put(continue_msg()); // from outside the arena: the workers take it
 
     std::vector<int> idx(m);
@@ -272,6 +337,7 @@ void StepGraph::run_with_messages() {
         bool progress = false;
         int k = 0;
         while (impl_->ready.try_pop(k)) {
+            tsan::acquire(&send_buf_[static_cast<std::size_t>(k)]);
             post_send(static_cast<std::size_t>(k));
             progress = true;
         }
@@ -293,6 +359,7 @@ void StepGraph::run_with_messages() {
                     messages_[rmsg[q]].done = now;
                     arrived[q] = -1;
                     --delayed;
+                    tsan::release(&recv_buf_[q]);
                     impl_->recvs[q]->try_put(continue_msg());
                 }
         }
@@ -309,7 +376,7 @@ void StepGraph::run_with_messages() {
         // rank may share its cores with another rank's workers.
         if (progress) {
             backoff = std::chrono::microseconds(50);
-        } else if (impl_->running.load() == 0) {
+        } else if (impl_->running.load(std::memory_order_relaxed) == 0) {
             std::this_thread::sleep_for(std::chrono::microseconds(10));
         } else {
             std::this_thread::sleep_for(backoff);
@@ -324,6 +391,7 @@ void StepGraph::run_with_messages() {
         impl_->arena->execute([&] { impl_->graph->wait_for_all(); });
     else
         impl_->graph->wait_for_all();
+    impl_->join_tasks();
     for (std::size_t q = 0; q < m; ++q)
         if (sreq[q] != MPI_REQUEST_NULL) {
             MPI_Wait(&sreq[q], MPI_STATUS_IGNORE);

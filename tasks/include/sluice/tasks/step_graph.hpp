@@ -12,7 +12,10 @@
 //   recv(e,p)   is released by the main thread when MPI_Testsome reports the message (the
 //               MPI_Irecv was posted before any task of the step ran) and, so that it never
 //               overwrites halo data a local task still reads, by (s_e, g) of those groups;
-//               it unpacks, and (s_e + 1, g) waits for it.
+//               it unpacks, and (s_e + 1, g) waits for it;
+//   (s_e + 1, g) also waits for send(e,p): it may overwrite particles of g that the pack reads
+//               (ThreadSanitizer found the walls stage writing a wall particle's pressure
+//               while the pressure exchange packed it).
 // Interior groups depend on no message and run while messages are in flight. Only the main
 // thread calls MPI (MPI_THREAD_FUNNELED); no TBB worker ever waits inside MPI.
 #include "sluice/tasks/comm.hpp"
