@@ -60,9 +60,7 @@ struct Neighbourhood {
     template <class F>
     void for_each_neighbour(const AdjacentCells<D>& adj, std::uint32_t i, F&& f) const {
         if (list != nullptr && list->covers(i)) {
-            for_each_listed(i, [&](std::uint32_t, std::uint32_t j, const Vec<D>& dx, Real r2) {
-                f(j, dx, r2);
-            });
+            for_each_listed(i, f);
             return;
         }
         const Real support2 = support * support;
@@ -80,26 +78,14 @@ struct Neighbourhood {
         }
     }
 
-    // As for_each_neighbour, and also passes factor(r2) for the pair: taken from the list
-    // (computed once per step by build_list with the same function), computed here otherwise.
-    // The kernel gradient factor (dW/dr)/r is what every gradient sum needs, and sqrt + kernel
-    // per pair is most of a stage's arithmetic: three stages of a step share one evaluation.
-    template <class G, class F>
-    void for_each_pair(const AdjacentCells<D>& adj, std::uint32_t i, const G& factor, F&& f) const {
-        if (list != nullptr && list->covers(i)) {
-            for_each_listed(i, [&](std::uint32_t p, std::uint32_t j, const Vec<D>& dx, Real r2) {
-                f(j, dx, r2, list->factor[p]);
-            });
-            return;
-        }
-        for_each_neighbour(
-            adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) { f(j, dx, r2, factor(r2)); });
-    }
-
-    // sum + the sum over the pairs of i of f(j, dx, r2, factor) (as for_each_pair), added in
-    // pair order. The running sum is a local of this loop rather than a variable the pair
-    // function captures by reference: GCC then keeps it in registers (with a captured
-    // accumulator it stored and reloaded it every pair, a store-forwarding stall per pair).
+    // sum + the sum over the pairs of i (as for_each_neighbour) of f(j, dx, r2, factor(r2)),
+    // added in pair order. factor(r2) is taken from the list (computed once per step by
+    // build_list with the same function), computed here otherwise: the kernel gradient factor
+    // (dW/dr)/r is what every gradient sum needs, and sqrt + kernel per pair is most of a
+    // stage's arithmetic, so the stages of a step share one evaluation. The running sum is a local
+    // of this loop rather than a variable the pair function captures by reference: GCC then keeps
+    // it in registers (with a captured accumulator it stored and reloaded it every pair, a
+    // store-forwarding stall per pair).
     template <class T, class G, class F>
     [[nodiscard]] T sum_over_pairs(const AdjacentCells<D>& adj, std::uint32_t i, const G& factor,
                                    T sum, F&& f) const {
@@ -129,7 +115,7 @@ struct Neighbourhood {
     }
 
 private:
-    // The listed pairs of i (the list must cover i): f(p, j, dx, r2), p the pair's index.
+    // The listed pairs of i (the list must cover i): f(j, dx, r2).
     template <class F>
     void for_each_listed(std::uint32_t i, F&& f) const {
         const std::uint32_t k = i - list->first;
@@ -139,13 +125,13 @@ private:
             for (std::uint32_t p = b; p < e; ++p) {
                 const std::uint32_t j = list->j[p];
                 const Vec<D> dx = xi - x[j];
-                f(p, j, dx, dx.squaredNorm());
+                f(j, dx, dx.squaredNorm());
             }
         } else {
             for (std::uint32_t p = b; p < e; ++p) {
                 const std::uint32_t j = list->j[p];
                 const Vec<D> dx = xi + list->shift[p] - x[j];
-                f(p, j, dx, dx.squaredNorm());
+                f(j, dx, dx.squaredNorm());
             }
         }
     }
@@ -153,7 +139,7 @@ private:
 public:
     // Fills `out` with the neighbours of the particles of `cells`, which must be contiguous
     // in the particle arrays and given in storage order (a cell group's cells), and with
-    // factor(r2) for every pair (see for_each_pair). For a centre i with partial(i) true,
+    // factor(r2) for every pair (see sum_over_pairs). For a centre i with partial(i) true,
     // only the neighbours j with wanted(j) are listed (the solver lists only fluid partners of
     // wall particles: nothing reads wall-wall pairs, and in 3-D they are half of all pairs).
     // The wanted particles of every cell must come first in it (the solver's fluid particles

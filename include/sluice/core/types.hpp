@@ -4,8 +4,8 @@
 #include <cstdint>
 
 // On a per-cell neighbour loop: inline every call inside it (the per-pair lambda included).
-// Without it GCC 12 keeps the pair lambda an out-of-line call, since for_each_pair invokes it
-// from three places, and a call per pair costs a third of a stage (perf/NOTES.md).
+// Without it GCC 12 keeps the pair lambda an out-of-line call, since the neighbour walks invoke
+// it from several places, and a call per pair costs a third of a stage (perf/NOTES.md).
 // Only in optimised builds without sanitizers: with ASan's instrumentation, flattening makes
 // GCC spend over 7 minutes and 2.7 GB on simulation.cpp.
 #if defined(__OPTIMIZE__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
