@@ -6,7 +6,6 @@
 #include "sluice/physics/integrator.hpp"
 #include "sluice/physics/shifting.hpp"
 
-#include "particle_messages.hpp"
 #include "projection_data.hpp"
 
 #include <tbb/global_control.h>
@@ -208,31 +207,6 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
 }
 
 template <int D>
-void Simulation<D>::distribute_initial_particles() {
-    if (!comm_.parallel())
-        return;
-    // Every rank generated the same particles; each keeps the cells of its part of the curve.
-    rebinner_(grid_, P_, ranges_, occupied_);
-    if (cfg_.initial_decomposition == InitialDecomposition::key_range) {
-        layout_ = tasks::cut_ranks_by_key(grid_, comm_.size());
-    } else {
-        std::vector<tasks::CurveUnit> units;
-        units.reserve(occupied_.size());
-        for (const auto& c : occupied_)
-            units.push_back({c.key, static_cast<double>(c.count)});
-        layout_ = tasks::cut_ranks(units, comm_.size());
-    }
-    peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
-    std::vector<std::size_t> keep;
-    for (const auto& c : occupied_)
-        if (layout_.rank_of(c.key) == comm_.rank())
-            for (std::uint32_t i = ranges_.begin[c.cell]; i < ranges_.end[c.cell]; ++i)
-                keep.push_back(i);
-    P_.permute(keep);
-    P_.resize(keep.size());
-}
-
-template <int D>
 TimeStepLimits Simulation<D>::limits_at_rest() const {
     Real g = 0;
     for (int d = 0; d < D; ++d)
@@ -303,105 +277,6 @@ void Simulation<D>::rebin_and_decompose() {
 }
 
 template <int D>
-void Simulation<D>::plan_halo() {
-    if (!comm_.parallel())
-        return;
-    const double t0 = tasks::clock_seconds();
-    const std::size_t P = peers_.size();
-    std::vector<CellIndex> cells;
-    cells.reserve(occupied_.size());
-    for (const auto& c : occupied_)
-        cells.push_back(c.cell);
-    occupied_targets_ = tasks::halo_targets(grid_, layout_, comm_.rank(), peers_, cells);
-    plan_.send_cells.assign(P, {});
-    plan_.send_count.assign(P, 0);
-    plan_.send_walls.assign(P, 0);
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-        if (occupied_targets_[k].empty())
-            continue;
-        std::size_t walls = 0;
-        for (std::uint32_t i = ranges_.begin[cells[k]]; i < ranges_.end[cells[k]]; ++i)
-            walls += P_.kind[i] == Kind::wall ? 1 : 0;
-        for (int p : occupied_targets_[k]) {
-            const auto pu = static_cast<std::size_t>(p);
-            plan_.send_cells[pu].push_back(cells[k]);
-            plan_.send_count[pu] += occupied_[k].count;
-            plan_.send_walls[pu] += walls;
-        }
-    }
-    // Each peer learns how many particles (and walls) it will receive, so that it can size
-    // its arrays and post exact receives before the step starts.
-    std::vector<tasks::Bytes> out(P), in;
-    for (std::size_t p = 0; p < P; ++p) {
-        tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_count[p]));
-        tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_walls[p]));
-    }
-    comm_.exchange(peers_, out, in, 12);
-    plan_.recv_count.assign(P, 0);
-    plan_.recv_walls.assign(P, 0);
-    plan_.recv_offset.assign(P, 0);
-    std::size_t next = owned_;
-    for (std::size_t p = 0; p < P; ++p) {
-        std::size_t pos = 0;
-        plan_.recv_count[p] = tasks::take<std::uint64_t>(in[p], pos);
-        plan_.recv_walls[p] = tasks::take<std::uint64_t>(in[p], pos);
-        plan_.recv_offset[p] = next;
-        next += plan_.recv_count[p];
-    }
-    P_.resize(next);
-    between_.push_back({"halo counts", -1, true, 16 * P, t0, tasks::clock_seconds()});
-}
-
-template <int D>
-std::vector<std::vector<int>> Simulation<D>::boundary_groups() const {
-    // Groups holding a halo cell of each peer; occupied_ and the concatenated group cell
-    // lists are in the same (key) order.
-    std::vector<std::vector<int>> facing(peers_.size());
-    std::size_t k = 0;
-    for (int g = 0; g < topo_.group_count(); ++g)
-        for (std::size_t c = 0; c < topo_.cells[static_cast<std::size_t>(g)].size(); ++c, ++k)
-            for (int p : occupied_targets_[k]) {
-                auto& f = facing[static_cast<std::size_t>(p)];
-                if (f.empty() || f.back() != g)
-                    f.push_back(g);
-            }
-    return facing;
-}
-
-template <int D>
-void Simulation<D>::migrate_to_neighbours() {
-    // A particle moves less than one cell per step, so it can only enter a peer's cell.
-    const double t0 = tasks::clock_seconds();
-    std::vector<tasks::Bytes> out(peers_.size()), in;
-    std::vector<std::size_t> keep;
-    keep.reserve(P_.size());
-    for (std::size_t i = 0; i < P_.size(); ++i) {
-        const int owner = layout_.rank_of(grid_.morton(grid_.coords(P_.x[i])));
-        if (owner == comm_.rank()) {
-            keep.push_back(i);
-            continue;
-        }
-        const auto it = std::lower_bound(peers_.begin(), peers_.end(), owner);
-        if (it == peers_.end() || *it != owner)
-            throw std::logic_error(fmt::format("particle {} jumped to rank {}, not a neighbour "
-                                               "of rank {}",
-                                               P_.id[i], owner, comm_.rank()));
-        messages::pack_particle(P_, i, out[static_cast<std::size_t>(it - peers_.begin())]);
-    }
-    comm_.exchange(peers_, out, in, 11);
-    std::size_t bytes = 0;
-    for (const auto& b : out)
-        bytes += b.size();
-    if (keep.size() != P_.size()) {
-        P_.permute(keep);
-        P_.resize(keep.size());
-    }
-    for (const auto& b : in)
-        messages::unpack_particles<D>(b, P_);
-    between_.push_back({"migrate", -1, true, bytes, t0, tasks::clock_seconds()});
-}
-
-template <int D>
 void Simulation<D>::rebuild() {
     // Between rebuilds the particles stay where the last sort put them (each within skin/2 of
     // where it was sorted), halo plans and groups stay, and no particle changes owner.
@@ -411,114 +286,6 @@ void Simulation<D>::rebuild() {
     balance_due_ = false;
     rebin_and_decompose();
     std::copy(P_.x.begin(), P_.x.end(), P_.x_ref.begin());
-}
-
-template <int D>
-void Simulation<D>::update_balance_window(const std::vector<double>& busy_per_rank) {
-    for (std::size_t r = 0; r < window_busy_.size(); ++r)
-        window_busy_[r] += busy_per_rank[r];
-    ++window_steps_;
-    ++steps_since_rebalance_;
-    const bool window_full = window_steps_ >= cfg_.rebalance_window;
-    const bool every = cfg_.rebalance_every > 0 && steps_since_rebalance_ >= cfg_.rebalance_every;
-    if (!window_full && !every)
-        return;
-    const double measured = tasks::imbalance(window_busy_);
-    if (window_full)
-        balance_history_.push_back({steps_, measured});
-    // Acted on at the next rebuild (particles change owner only then).
-    if (every || measured > 1 + cfg_.rebalance_threshold) {
-        balance_due_ = true;
-        balance_measured_ = measured;
-    }
-    std::fill(window_busy_.begin(), window_busy_.end(), 0.0);
-    window_steps_ = 0;
-}
-
-template <int D>
-bool Simulation<D>::rebalance() {
-    const double measured = balance_measured_;
-    const bool every = cfg_.rebalance_every > 0 && steps_since_rebalance_ >= cfg_.rebalance_every;
-    // Every rank offers its occupied cells as units of the curve, each with its share (by
-    // particle count) of its group's measured cost per step; all ranks compute the same new cut
-    // points from the same gathered list.
-    const double t0 = tasks::clock_seconds();
-    tasks::Bytes mine;
-    for (int g = 0; g < topo_.group_count(); ++g) {
-        const auto& cells = topo_.cells[static_cast<std::size_t>(g)];
-        double particles = 0;
-        for (CellIndex c : cells)
-            particles += ranges_.end[c] - ranges_.begin[c];
-        const bool timed = cfg_.balance_cost == BalanceCost::time && graph_steps_ > 0;
-        const double per_particle = timed && particles > 0
-                                        ? group_busy_[static_cast<std::size_t>(g)] /
-                                              static_cast<double>(graph_steps_) / particles
-                                        : 1.0;
-        for (CellIndex c : cells) {
-            tasks::put(mine, grid_.morton(grid_.unlinear(c)));
-            tasks::put(mine, per_particle * (ranges_.end[c] - ranges_.begin[c]));
-        }
-    }
-    std::vector<tasks::CurveUnit> units;
-    for (const auto& b : comm_.all_gather(mine)) {
-        std::size_t pos = 0;
-        while (pos < b.size()) {
-            tasks::CurveUnit u{};
-            u.key = tasks::take<MortonKey>(b, pos);
-            u.cost = tasks::take<double>(b, pos);
-            units.push_back(u);
-        }
-    }
-    const tasks::RankLayout next = tasks::cut_ranks(units, comm_.size());
-    std::vector<double> predicted(static_cast<std::size_t>(comm_.size()), 0.0);
-    std::vector<double> now = predicted;
-    for (const auto& u : units) {
-        predicted[static_cast<std::size_t>(next.rank_of(u.key))] += u.cost;
-        now[static_cast<std::size_t>(layout_.rank_of(u.key))] += u.cost;
-    }
-    // Moving particles costs a step's worth of communication: only when it pays. Judged on
-    // the same per-unit costs for the present and the new cuts, so noise cancels.
-    if (!every &&
-        tasks::imbalance(predicted) > tasks::imbalance(now) - cfg_.rebalance_threshold / 2)
-        return false;
-
-    // Every particle goes to its owner under the new cuts.
-    std::vector<tasks::Bytes> out(static_cast<std::size_t>(comm_.size())), in;
-    std::vector<std::size_t> keep;
-    std::uint64_t moved = 0;
-    for (std::size_t i = 0; i < P_.size(); ++i) {
-        const int owner = next.rank_of(grid_.morton(grid_.coords(P_.x[i])));
-        if (owner == comm_.rank()) {
-            keep.push_back(i);
-        } else {
-            messages::pack_particle(P_, i, out[static_cast<std::size_t>(owner)]);
-            ++moved;
-        }
-    }
-    comm_.all_to_all(out, in);
-    P_.permute(keep);
-    P_.resize(keep.size());
-    for (const auto& b : in)
-        messages::unpack_particles<D>(b, P_);
-    std::uint64_t moved_total = 0;
-    for (const auto& b : comm_.all_gather(std::span<const std::byte>(
-             reinterpret_cast<const std::byte*>(&moved), sizeof(moved)))) {
-        std::size_t pos = 0;
-        moved_total += tasks::take<std::uint64_t>(b, pos);
-    }
-    layout_ = next;
-    peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
-    force_regroup_ = true;
-    steps_since_rebalance_ = 0;
-    const double t1 = tasks::clock_seconds();
-    rebalances_.push_back({steps_, measured, tasks::imbalance(predicted), moved_total, t1 - t0});
-    between_.push_back({"rebalance", -1, true, 0, t0, t1});
-    if (opts_.log_rebalances && comm_.rank() == 0)
-        fmt::print(stderr,
-                   "sluice: rebalance at step {}: imbalance {:.3f} -> {:.3f} (predicted), {} "
-                   "particles moved, {:.1f} ms\n",
-                   steps_, measured, tasks::imbalance(predicted), moved_total, (t1 - t0) * 1e3);
-    return true;
 }
 
 template <int D>
@@ -861,24 +628,6 @@ SolverState Simulation<D>::solver_state() const {
     s.limit_viscous = limits_.viscous;
     s.limit_force = limits_.force;
     return s;
-}
-
-template <int D>
-Particles<D> Simulation<D>::gather_particles() const {
-    if (!comm_.parallel()) {
-        Particles<D> copy = P_;
-        copy.resize(owned_);
-        return copy;
-    }
-    tasks::Bytes mine;
-    mine.reserve(owned_ * messages::particle_bytes<D>);
-    for (std::size_t i = 0; i < owned_; ++i)
-        messages::pack_particle(P_, i, mine);
-    Particles<D> out;
-    // Ranks own consecutive runs of the curve, so rank order is (cell key, id) order.
-    for (const auto& b : comm_.gather(mine, 0))
-        messages::unpack_particles<D>(b, out);
-    return out;
 }
 
 template <int D>
