@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <numbers>
 
 using namespace sluice;
@@ -40,7 +41,13 @@ void check_kernel(const K& k) {
         const double fd = (k.W(r + e) - k.W(r - e)) / (2 * e);
         CHECK(k.dW(r) == doctest::Approx(fd).epsilon(1e-6).scale(k.W(0) / k.h));
         CHECK(k.dW(r) <= 1e-12 * k.W(0) / k.h); // monotone non-increasing
+        // The pair factor the neighbour lists store: (dW/dr)/r, whether the kernel gives it
+        // in closed form (Wendland, cubic spline) or by division.
+        CHECK(grad_factor(k, r * r) ==
+              doctest::Approx(k.dW(r) / r).epsilon(1e-12).scale(k.W(0) / (k.h * k.h)));
     }
+    CHECK(std::isfinite(grad_factor(k, 0.0)));                     // the self pair
+    CHECK(grad_factor(k, 1.0001 * k.support() * k.support()) == 0); // outside the support
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 // neighbour sum, and so the whole result, independent of threads, groups and ranks.
 #include "sluice/core/cell_grid.hpp"
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -111,6 +112,90 @@ struct Neighbourhood {
         for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) {
             sum += f(j, dx, r2, factor(r2));
         });
+        return sum;
+    }
+
+    // Pair displacement as plain components (see lane_sum_over_pairs).
+    using Dx = std::array<Real, D>;
+
+    // The sums over the pairs of i of f(j, dx, r2, factor(r2)) -> std::array<Real, N>
+    // (N <= 3), with dx = x_i - x_j as a Dx. Over a list this is an `omp simd` reduction: the
+    // compiler gives each vector lane every W-th pair and adds the lanes at the end, so the
+    // pair arithmetic runs W pairs per instruction. A pair function for it is written in
+    // plain components (no Eigen vectors, whose 2-D operations are SSE intrinsics the
+    // vectoriser cannot widen) and without branches (selects instead). The order of the
+    // additions depends on W (a build setting) and on the list, which is the same for any
+    // threads, groups and ranks, so results stay bitwise invariant across them (the build
+    // turns off peeling for alignment, see CMakeLists.txt). Off a list, pairs are added in
+    // for_each_neighbour's order.
+    template <std::size_t N, class G, class F>
+    [[nodiscard]] std::array<Real, N> lane_sum_over_pairs(const AdjacentCells<D>& adj,
+                                                          std::uint32_t i, const G& factor,
+                                                          F&& f) const {
+        static_assert(N >= 1 && N <= 3);
+        static_assert(sizeof(Vec<D>) == D * sizeof(Real), "positions are read as D-strided");
+        std::array<Real, N> sum{};
+        if (list == nullptr || !list->covers(i)) {
+            for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dxv, Real r2) {
+                Dx dx;
+                for (int d = 0; d < D; ++d)
+                    dx[d] = dxv[d];
+                const std::array<Real, N> c = f(j, dx, r2, factor(r2));
+                for (std::size_t n = 0; n < N; ++n)
+                    sum[n] += c[n];
+            });
+            return sum;
+        }
+        const std::uint32_t k = i - list->first;
+        const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
+        const Real* X = x.data()->data();
+        const std::uint32_t* js = list->j.data();
+        const Real* fs = list->factor.data();
+        Dx xi;
+        for (int d = 0; d < D; ++d)
+            xi[d] = x[i][d];
+        Real s0 = 0, s1 = 0, s2 = 0;
+        if (!list->periodic) {
+#pragma omp simd reduction(+ : s0, s1, s2)
+            for (std::uint32_t p = b; p < e; ++p) {
+                const std::uint32_t j = js[p];
+                Dx dx;
+                Real r2 = 0;
+                for (int d = 0; d < D; ++d) {
+                    dx[d] = xi[d] - X[D * j + d];
+                    r2 += dx[d] * dx[d];
+                }
+                const std::array<Real, N> c = f(j, dx, r2, fs[p]);
+                s0 += c[0];
+                if constexpr (N > 1)
+                    s1 += c[1];
+                if constexpr (N > 2)
+                    s2 += c[2];
+            }
+        } else {
+            const Vec<D>* shift = list->shift.data();
+#pragma omp simd reduction(+ : s0, s1, s2)
+            for (std::uint32_t p = b; p < e; ++p) {
+                const std::uint32_t j = js[p];
+                Dx dx;
+                Real r2 = 0;
+                for (int d = 0; d < D; ++d) {
+                    dx[d] = xi[d] + shift[p][d] - X[D * j + d];
+                    r2 += dx[d] * dx[d];
+                }
+                const std::array<Real, N> c = f(j, dx, r2, fs[p]);
+                s0 += c[0];
+                if constexpr (N > 1)
+                    s1 += c[1];
+                if constexpr (N > 2)
+                    s2 += c[2];
+            }
+        }
+        sum[0] = s0;
+        if constexpr (N > 1)
+            sum[1] = s1;
+        if constexpr (N > 2)
+            sum[2] = s2;
         return sum;
     }
 
@@ -276,8 +361,12 @@ public:
             r2s[p] = factor(r2s[p]);
     }
 
-    [[nodiscard]] std::uint32_t begin(CellIndex c) const { return cells->begin[c]; }
-    [[nodiscard]] std::uint32_t end(CellIndex c) const { return cells->end[c]; }
+    [[nodiscard]] std::uint32_t begin(CellIndex c) const {
+        return cells->begin[c];
+    }
+    [[nodiscard]] std::uint32_t end(CellIndex c) const {
+        return cells->end[c];
+    }
 };
 
 } // namespace sluice

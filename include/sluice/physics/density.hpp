@@ -63,6 +63,9 @@ SLUICE_FLATTEN void renormalised_density_gradient(const Neighbourhood<D>& nb, co
     }
 }
 
+// The diffusion term a continuity loop evaluates (none when delta = 0).
+enum class DiffusionTerm { none, antuono, fourtakas };
+
 // delta-SPH density diffusion: coefficient and form (case key numerics.density_diffusion).
 template <int D>
 struct DensityDiffusionParams {
@@ -97,37 +100,50 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     const bool antuono = diff.delta_h_c0 > 0 && diff.form == DensityDiffusion::antuono;
     const bool fourtakas = diff.delta_h_c0 > 0 && diff.form == DensityDiffusion::fourtakas;
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
-        if (P.kind[i] != Kind::fluid)
-            continue;
-        const Real rho_i = P.rho[i];
-        const Vec<D> v_i = vel[i];
-        const Vec<D> g_i = P.grad_rho[i];
-        // (velocity divergence part, diffusion part), summed together (see
-        // Neighbourhood::sum_over_pairs for why a fold).
-        using Sums = Eigen::Matrix<Real, 2, 1>;
-        const Sums sums = nb.sum_over_pairs(
-            adj, i, F, Sums(Sums::Zero()),
-            [&](std::uint32_t j, const Vec<D>& dx, Real r2, Real Fij) -> Sums {
-                if (r2 <= 0)
-                    return Sums::Zero();
-                const Vec<D> gradW = Fij * dx;
-                if (P.kind[j] == Kind::wall)
-                    return Sums(P.mass[j] * v_i.dot(gradW), 0); // fixed wall: v_j = 0
-                const Real div = P.mass[j] * (v_i - vel[j]).dot(gradW);
-                const Real Vj = P.volume[j];
-                Real diffusion = 0;
-                if (antuono) {
-                    diffusion =
-                        Vj * (-2 * (P.rho[j] - rho_i) * Fij - (g_i + P.grad_rho[j]).dot(gradW));
-                } else if (fourtakas) {
-                    const Real rho_h = -diff.hydrostatic_gradient.dot(dx); // dx = x_i - x_j
-                    diffusion = Vj * (-2 * (P.rho[j] - rho_i - rho_h) * Fij);
-                }
-                return Sums(div, diffusion);
-            });
-        drho_out[i] = sums[0] + diff.delta_h_c0 * sums[1];
-    }
+    // One loop per diffusion form (a compile-time constant inside), so that no pair computes
+    // or gathers what its form does not use.
+    const auto run = [&]<DiffusionTerm form>() {
+        for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+            if (P.kind[i] != Kind::fluid)
+                continue;
+            const Real rho_i = P.rho[i];
+            const Vec<D> v_i = vel[i];
+            const Vec<D> g_i = P.grad_rho[i];
+            // (velocity divergence part, diffusion part), in plain components and with selects
+            // instead of branches so that the pair loop vectorises
+            // (Neighbourhood::lane_sum_over_pairs). The self pair adds nothing: its dx is zero
+            // and its factor finite.
+            const auto sums = nb.template lane_sum_over_pairs<2>(
+                adj, i, F,
+                [&](std::uint32_t j, const typename Neighbourhood<D>::Dx& dx, Real,
+                    Real Fij) -> std::array<Real, 2> {
+                    const bool wall = P.kind[j] == Kind::wall;
+                    Real dv_dx = 0, g_dx = 0, rho_h = 0;
+                    for (int d = 0; d < D; ++d) {
+                        const Real v_j = wall ? Real(0) : vel[j][d]; // fixed wall: v_j = 0
+                        dv_dx += (v_i[d] - v_j) * dx[d];
+                        if constexpr (form == DiffusionTerm::antuono)
+                            g_dx += (g_i[d] + P.grad_rho[j][d]) * dx[d];
+                        if constexpr (form == DiffusionTerm::fourtakas)
+                            rho_h -= diff.hydrostatic_gradient[d] * dx[d]; // dx = x_i - x_j
+                    }
+                    const Real div = P.mass[j] * Fij * dv_dx;
+                    Real diffusion = 0;
+                    if constexpr (form == DiffusionTerm::antuono)
+                        diffusion = P.volume[j] * (-2 * (P.rho[j] - rho_i) * Fij - g_dx * Fij);
+                    if constexpr (form == DiffusionTerm::fourtakas)
+                        diffusion = P.volume[j] * (-2 * (P.rho[j] - rho_i - rho_h) * Fij);
+                    return {div, wall ? Real(0) : diffusion}; // diffusion over fluid pairs only
+                });
+            drho_out[i] = sums[0] + diff.delta_h_c0 * sums[1];
+        }
+    };
+    if (antuono)
+        run.template operator()<DiffusionTerm::antuono>();
+    else if (fourtakas)
+        run.template operator()<DiffusionTerm::fourtakas>();
+    else
+        run.template operator()<DiffusionTerm::none>();
 }
 
 // Pressure from the equation of state for the fluid particles of cell c, and the two
