@@ -6,7 +6,7 @@ probe P2 (right wall, 0.02 m above the floor). Prints per scheme the front's RMS
 deviation from Martin & Moyce for T <= 3 (as tests/validation/test_dam_break_2d.cpp), the
 peak wall pressure and its time, steps, wall time and ms per step.
 
-Usage: perf/projection/dam_break_compare.py [--end 0.6] [--threads 1] [--png FILE]
+Usage: perf/projection/dam_break_compare.py [--end 1.0] [--threads 1] [--png FILE] [--out DIR]
 """
 from __future__ import annotations
 
@@ -45,7 +45,8 @@ def martin_moyce() -> list[tuple[float, float]]:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--end", type=float, default=0.6, help="simulated time [s]")
+    ap.add_argument("--end", type=float, default=1.0, help="simulated time [s]")
+    ap.add_argument("--out", help="keep the two runs' results here (default: a temporary folder)")
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--png", default=str(ROOT / "perf" / "projection" / "dam_break_compare.png"))
     args = ap.parse_args()
@@ -55,7 +56,8 @@ def main() -> None:
     T_scale = math.sqrt(2 * G / A)
     fig, (ax_front, ax_p) = plt.subplots(1, 2, figsize=(12, 4.5))
     ax_front.plot([t for t, _ in exp], [z for _, z in exp], "ko", label="Martin & Moyce 1952")
-    with tempfile.TemporaryDirectory() as work:
+    with tempfile.TemporaryDirectory() as tmp:
+        work = args.out or tmp
         for case, label in (("dam_break_2d", "WCSPH"), ("projection_dam_break_2d", "projection")):
             out = Path(work) / case
             subprocess.run(

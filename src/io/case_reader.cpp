@@ -66,7 +66,8 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
       "balance_cost", "initial_decomposition"}},
     {"checkpoint", {"every_steps", "every_minutes"}},
     {"projection",
-     {"solver", "tolerance", "max_iterations", "relaxation", "gamma", "surface_diameter_over_dx"}},
+     {"solver", "tolerance", "max_iterations", "relaxation", "gamma", "surface_diameter_over_dx",
+      "surface_density_ratio", "correction_gradient", "fluid_collision"}},
     {"limits", {"max_speed", "min_density", "max_density"}},
 };
 const std::set<std::string, std::less<>> kArrayTables = {"blocks", "probes", "walls.planes",
@@ -607,6 +608,9 @@ const std::vector<std::pair<std::string, Scheme>> kSchemes = {{"wcsph", Scheme::
                                                               {"projection", Scheme::projection}};
 const std::vector<std::pair<std::string, PressureSolver>> kPressureSolvers = {
     {"bicgstab", PressureSolver::bicgstab}, {"sor", PressureSolver::sor}};
+const std::vector<std::pair<std::string, CorrectionGradient>> kCorrectionGradients = {
+    {"second_order", CorrectionGradient::second_order},
+    {"first_order", CorrectionGradient::first_order}};
 const std::vector<std::pair<std::string, DensityScheme>> kDensity = {
     {"summation", DensityScheme::summation}, {"continuity", DensityScheme::continuity}};
 const std::vector<std::pair<std::string, DensityDiffusion>> kDiffusion = {
@@ -863,7 +867,8 @@ void read_numerics(const Section& s, CaseConfig& c) {
 void read_projection(const Section& s, CaseConfig& c) {
     if (c.scheme != Scheme::projection) {
         for (const char* k : {"solver", "tolerance", "max_iterations", "relaxation", "gamma",
-                              "surface_diameter_over_dx"})
+                              "surface_diameter_over_dx", "surface_density_ratio",
+                              "correction_gradient", "fluid_collision"})
             s.require(s.node(k) == nullptr, k,
                       "applies only to numerics.scheme = \"projection\" (the scheme is "
                       "\"wcsph\")");
@@ -891,6 +896,13 @@ void read_projection(const Section& s, CaseConfig& c) {
               "surface_diameter_over_dx",
               fmt::format("must be in [1, 4] lattice spacings (seed 004: 2.1), got {}",
                           p.surface_diameter_over_dx));
+    p.surface_density_ratio = s.number("surface_density_ratio", 0.0);
+    s.require(p.surface_density_ratio >= 0 && p.surface_density_ratio < 1, "surface_density_ratio",
+              fmt::format("must be in [0, 1) (0 = off; MPS uses 0.97 with re = 2.1 l0), got {}",
+                          p.surface_density_ratio));
+    p.correction_gradient =
+        s.choice("correction_gradient", CorrectionGradient::second_order, kCorrectionGradients);
+    p.fluid_collision = s.boolean("fluid_collision").value_or(true);
 }
 
 void read_walls(const Section& s, CaseConfig& c) {

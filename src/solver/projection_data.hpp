@@ -22,10 +22,11 @@ enum class PpeRow : std::uint8_t { fluid, surface, wall };
 // Per cell group, aligned with the group's neighbour list (pair p of lists_[g]).
 template <int D>
 struct ProjectionGroup {
-    std::vector<Real> lap;    // WMLS Laplacian coefficient L_ij (fluid rows)
-    std::vector<Vec<D>> grad; // WMLS gradient coefficient (fluid rows)
-    std::vector<Real> a;      // coefficient a_ij of the scaled system (every row)
-    std::vector<Vec<D>> scratch_offsets;
+    std::vector<Real> lap;            // WMLS Laplacian coefficient L_ij (fluid rows)
+    std::vector<Vec<D>> grad;         // WMLS gradient coefficient (fluid rows): divergence in P3
+    std::vector<Vec<D>> grad_correct; // gradient coefficient of the correction P7
+    std::vector<Real> a;              // coefficient a_ij of the scaled system (every row)
+    std::vector<Vec<D>> scratch_offsets, scratch_linear;
     std::vector<std::uint32_t> scratch_pairs;
     std::array<double, 6> partial{}; // reduction partials of the last solver run, this group
 };
@@ -126,6 +127,7 @@ struct ProjectionData {
     Real n0 = 0;          // particle number density of the full lattice
     Real lattice_sum = 0; // S = sum_j L_ij of the full lattice
     Real surface_diameter = 0;
+    Real collision_distance = 0; // wall and fluid-fluid collisions (docs/PROJECTION.md)
     physics::LsWeight weight = physics::LsWeight::pnu_mps;
 
     PressureSolveRecord last; // the last step's solve

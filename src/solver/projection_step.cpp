@@ -51,6 +51,7 @@ void Simulation<D>::init_projection() {
     ProjectionData<D>& d = *proj_;
     d.re = kernel_support_factor(cfg_.kernel) * h_;
     d.surface_diameter = cfg_.projection.surface_diameter_over_dx * cfg_.dx;
+    d.collision_distance = physics::wall_collision_distance_over_dx * cfg_.dx;
     const std::vector<Vec<D>> lattice = lattice_offsets<D>(cfg_.dx, d.re);
     for (const Vec<D>& o : lattice)
         d.n0 += physics::ls_weight(o.norm(), d.re, d.weight);
@@ -144,6 +145,7 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
             [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; });
         G.lap.resize(list.pairs);
         G.grad.resize(list.pairs);
+        G.grad_correct.resize(list.pairs);
         G.a.resize(list.pairs);
     }
     const auto offset_of = [&](std::uint32_t i, std::uint32_t p) -> Vec<D> {
@@ -182,14 +184,24 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                 G.scratch_offsets.clear();
                 G.scratch_pairs.clear();
                 Real n = 0;
+                // Fluid-fluid collision on the velocities at the start of the step
+                // (docs/PROJECTION.md, "Collisions").
+                Vec<D> v_i = P_.v[i];
                 for (std::uint32_t p = b; p < e; ++p) {
                     G.lap[p] = 0;
                     G.grad[p].setZero();
-                    if (list.j[p] == i)
+                    G.grad_correct[p].setZero();
+                    const std::uint32_t j = list.j[p];
+                    if (j == i)
                         continue;
-                    G.scratch_offsets.push_back(offset_of(i, p));
+                    const Vec<D> off = offset_of(i, p);
+                    G.scratch_offsets.push_back(off);
                     G.scratch_pairs.push_back(p);
                     n += list.factor[p];
+                    if (cfg_.projection.fluid_collision && P_.kind[j] == Kind::fluid)
+                        v_i += physics::collision_velocity_change<D>(
+                            P_.v[i], P_.v[j], off, d.collision_distance,
+                            physics::fluid_collision_restitution);
                 }
                 d.number_density[i] = n;
                 const std::span<const Vec<D>> offsets(G.scratch_offsets);
@@ -199,15 +211,26 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                     const std::uint32_t p = G.scratch_pairs[m];
                     G.lap[p] = st.laplacian(0, static_cast<Eigen::Index>(m));
                     G.grad[p] = st.gradient.col(static_cast<Eigen::Index>(m));
+                    G.grad_correct[p] = G.grad[p];
                     lap_u += G.lap[p] * (P_.v[list.j[p]] - P_.v[i]);
                 }
+                if (cfg_.projection.correction_gradient == CorrectionGradient::first_order) {
+                    // P7's gradient from the first-order fit; where that is singular too,
+                    // the second-order coefficients stay.
+                    G.scratch_linear.resize(G.scratch_pairs.size());
+                    if (physics::wmls_linear_gradient<D>(offsets, re, weight,
+                                                         std::span<Vec<D>>(G.scratch_linear)))
+                        for (std::size_t m = 0; m < G.scratch_pairs.size(); ++m)
+                            G.grad_correct[G.scratch_pairs[m]] = G.scratch_linear[m];
+                }
                 const bool surface =
-                    !st.ok || physics::is_free_surface<D>(offsets, d.surface_diameter);
+                    !st.ok || physics::is_free_surface<D>(offsets, d.surface_diameter) ||
+                    physics::below_surface_density(n, d.n0, cfg_.projection.surface_density_ratio);
                 d.row[i] = surface ? PpeRow::surface : PpeRow::fluid;
                 // A stencil that cannot fit second derivatives gives no viscous term.
-                d.u_star[i] = physics::predicted_velocity<D>(
-                    P_.v[i], st.ok ? lap_u : Vec<D>::Zero(), cfg_.viscosity / cfg_.rho0,
-                    momentum_.gravity, dt_);
+                d.u_star[i] = physics::predicted_velocity<D>(v_i, st.ok ? lap_u : Vec<D>::Zero(),
+                                                             cfg_.viscosity / cfg_.rho0,
+                                                             momentum_.gravity, dt_);
                 continue;
             }
             // Stage 1.
@@ -505,9 +528,9 @@ void Simulation<D>::correct_stage(int group) {
             p_ref = physics::gradient_reference(p_ref, P_.p[list.j[p]]);
         Vec<D> grad = Vec<D>::Zero();
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            grad += G.grad[p] * (physics::gradient_pressure(P_.p[list.j[p]]) - p_ref);
+            grad += G.grad_correct[p] * (physics::gradient_pressure(P_.p[list.j[p]]) - p_ref);
         Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, cfg_.rho0, dt_);
-        const Real collision = physics::wall_collision_distance_over_dx * cfg_.dx;
+        const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             if (P_.kind[list.j[p]] == Kind::wall) {
                 Vec<D> offset = P_.x[list.j[p]] - P_.x[i];

@@ -99,6 +99,15 @@ expect_refused projection_solver "projection.solver" --set 'numerics.scheme="pro
 cp valid.toml projection_relaxation.toml
 expect_refused projection_relaxation "projection.relaxation" \
     --set 'numerics.scheme="projection"' --set projection.relaxation=1.2
+cp valid.toml projection_beta.toml
+expect_refused projection_beta "projection.surface_density_ratio" \
+    --set 'numerics.scheme="projection"' --set projection.surface_density_ratio=1.5
+cp valid.toml projection_gradient.toml
+expect_refused projection_gradient "projection.correction_gradient" \
+    --set 'numerics.scheme="projection"' --set 'projection.correction_gradient="third"'
+cp valid.toml projection_collision.toml
+expect_refused projection_collision "projection.fluid_collision" \
+    --set 'numerics.scheme="projection"' --set projection.fluid_collision=1
 
 # A bad override is refused the same way.
 cp valid.toml override.toml

@@ -53,3 +53,26 @@ TEST_CASE("predictor and correction (P1, P7) and the scaled row residual") {
     CHECK(c.norm() == doctest::Approx(0).epsilon(1e-12));
     CHECK(row_residual(3, 5, 4) == 2.0);
 }
+
+TEST_CASE("fluid-fluid collision: approach removed with restitution, momentum conserved") {
+    const Real d = 0.008, e = 0.2;
+    const Vec<2> off(0.005, 0); // x_j - x_i
+    const Vec<2> vi(2, 1), vj(-1, 0.5);
+    // Approach speed (vi - vj).e = 3: i loses (1 + e)/2 * 3 = 1.8 along e.
+    const Vec<2> dvi = collision_velocity_change<2>(vi, vj, off, d, e);
+    CHECK(dvi[0] == doctest::Approx(-1.8));
+    CHECK(dvi[1] == 0.0);
+    const Vec<2> dvj = collision_velocity_change<2>(vj, vi, Vec<2>(-off), d, e);
+    CHECK((dvi + dvj).norm() == doctest::Approx(0).epsilon(1e-15));
+    // Relative approach after the collision is -e times the one before.
+    CHECK(((vi + dvi) - (vj + dvj)).dot(Vec<2>(1, 0)) == doctest::Approx(-e * 3));
+    // Receding or beyond the distance: nothing.
+    CHECK(collision_velocity_change<2>(vj, vi, off, d, e) == Vec<2>::Zero());
+    CHECK(collision_velocity_change<2>(vi, vj, Vec<2>(0.01, 0), d, e) == Vec<2>::Zero());
+}
+
+TEST_CASE("number-density surface criterion") {
+    CHECK(below_surface_density(0.95, 1.0, 0.97));
+    CHECK_FALSE(below_surface_density(0.98, 1.0, 0.97));
+    CHECK_FALSE(below_surface_density(0.1, 1.0, 0.0)); // beta = 0: off
+}

@@ -270,3 +270,44 @@ TEST_CASE("Degenerate stencils: finite values, documented fallback, ok = false")
         }
     }
 }
+
+TEST_CASE("First-order gradient: hand-computed stencils, linear exactness, singular stencils") {
+    const Real re = 3;
+    // Two orthogonal unit offsets: M = w diag(1, 1)/9 in the scaled variable, so c_j = r_j:
+    // one-sided finite differences, whatever the weight.
+    {
+        const std::vector<Vec<2>> offsets{Vec<2>(1, 0), Vec<2>(0, 1)};
+        std::vector<Vec<2>> c(2);
+        REQUIRE(wmls_linear_gradient<2>(offsets, re, LsWeight::pnu_mps, c));
+        CHECK(c[0][0] == doctest::Approx(1));
+        CHECK(c[0][1] == doctest::Approx(0).epsilon(1e-15));
+        CHECK(c[1][0] == doctest::Approx(0).epsilon(1e-15));
+        CHECK(c[1][1] == doctest::Approx(1));
+    }
+    // The symmetric cross (+-1, 0), (0, +-1): central differences, c_j = r_j / 2.
+    {
+        const std::vector<Vec<2>> offsets{Vec<2>(1, 0), Vec<2>(-1, 0), Vec<2>(0, 1), Vec<2>(0, -1)};
+        std::vector<Vec<2>> c(4);
+        REQUIRE(wmls_linear_gradient<2>(offsets, re, LsWeight::smooth, c));
+        for (std::size_t j = 0; j < 4; ++j)
+            CHECK((c[j] - offsets[j] / 2).norm() < 1e-14);
+    }
+    // Exact for linear fields on random one-sided 3-D stencils: sum_j c_j r_j^T = I.
+    {
+        std::mt19937_64 rng(2012);
+        const auto offsets = random_offsets<3>(rng, 12, 0.3, true);
+        std::vector<Vec<3>> c(offsets.size());
+        REQUIRE(wmls_linear_gradient<3>(offsets, 0.31, LsWeight::pnu_mps, c));
+        Mat<3> sum = Mat<3>::Zero();
+        for (std::size_t j = 0; j < offsets.size(); ++j)
+            sum += c[j] * offsets[j].transpose();
+        CHECK((sum - Mat<3>::Identity()).norm() < 1e-12);
+    }
+    // Collinear offsets: M is singular, the output is left untouched.
+    {
+        const std::vector<Vec<2>> offsets{Vec<2>(1, 0), Vec<2>(2, 0), Vec<2>(-1, 0)};
+        std::vector<Vec<2>> c(3, Vec<2>(7, 7));
+        CHECK_FALSE(wmls_linear_gradient<2>(offsets, re, LsWeight::pnu_mps, c));
+        CHECK(c[1] == Vec<2>(7, 7));
+    }
+}

@@ -23,6 +23,8 @@ enum class KernelType { quintic, wendland_c2, cubic_spline };
 // operators; docs/PROJECTION.md).
 enum class Scheme { wcsph, projection };
 enum class PressureSolver { bicgstab, sor };
+// Gradient of the projection scheme's velocity correction (docs/PROJECTION.md, P7).
+enum class CorrectionGradient { second_order, first_order };
 enum class DensityScheme { summation, continuity };
 // Form of the delta-SPH density diffusion term (docs/CASE_REFERENCE.md, [numerics]).
 enum class DensityDiffusion { antuono, fourtakas };
@@ -92,6 +94,9 @@ struct ProjectionSettings {
     double relaxation = 1.5; // SOR relaxation factor (seed 004: 1.5)
     double gamma = 0.01;     // relaxation of the density-deviation source term (seed 004: <= 1)
     double surface_diameter_over_dx = 2.1; // Dilts arc circle (seed 004: 2.1 l0)
+    double surface_density_ratio = 0;      // beta: also surface when n < beta n0 (0 = off)
+    CorrectionGradient correction_gradient = CorrectionGradient::second_order;
+    bool fluid_collision = true; // Koshizuka-type collision of fluid pairs closer than 0.8 dx
 };
 
 struct CaseConfig {

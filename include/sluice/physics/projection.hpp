@@ -86,6 +86,36 @@ Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance) {
     return approach > 0 ? Vec<D>(v - approach * e) : v;
 }
 
+// Fluid-fluid collision (Koshizuka et al. 1998's collision model, as used in MPS codes for
+// particles that the pressure fails to keep apart, e.g. at a splashing jet's tip where the
+// surface rows carry p = 0). A pair closer than `distance` that approaches exchanges the
+// momentum of its approach along the line of centres, with restitution e, for equal masses:
+//   dv_i = -(1 + e)/2 max(0, (v_i - v_j).e_ij) e_ij,   e_ij = (x_j - x_i)/r_ij,
+// and dv_j = -dv_i, so the pair's momentum is conserved. Summed over the neighbours of i with
+// the velocities before any collision (a Jacobi update: independent of particle order, hence
+// of threads and ranks). offset: x_j - x_i.
+inline constexpr Real fluid_collision_restitution = 0.2;
+
+template <int D>
+Vec<D> collision_velocity_change(const Vec<D>& v_i, const Vec<D>& v_j, const Vec<D>& offset,
+                                 Real distance, Real restitution) {
+    const Real r = offset.norm();
+    if (r >= distance || r == 0)
+        return Vec<D>::Zero();
+    const Vec<D> e = offset / r;
+    const Real approach = (v_i - v_j).dot(e);
+    return approach > 0 ? Vec<D>(-(1 + restitution) / 2 * approach * e) : Vec<D>::Zero();
+}
+
+// Number-density surface criterion (Koshizuka & Oka 1996, MPS): a particle whose number
+// density n_i = sum_j w(r_ij) is below beta n0 is a free-surface particle (p = 0), in addition
+// to the arc test. beta = 0 turns it off. On a lattice with the seed's re = 3.1 l0 and the
+// PNU-MPS weight the first row below a flat surface has n = 0.634 n0, the second 0.908 n0,
+// the third 0.998 n0 (docs/PROJECTION.md, P5).
+inline bool below_surface_density(Real n, Real n0, Real beta) {
+    return n < beta * n0;
+}
+
 // Residual of one row of the scaled system: bhat_i - (y_i - sum_j a_ij y_j).
 inline Real row_residual(Real bhat, Real y_i, Real sum_a_y) {
     return bhat - (y_i - sum_a_y);

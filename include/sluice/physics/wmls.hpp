@@ -19,6 +19,8 @@
 #include "sluice/physics/diff_result.hpp"
 #include "sluice/physics/ls_weight.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <span>
 
 namespace sluice::physics {
@@ -61,6 +63,33 @@ DiffResult<D> apply_stencil(const WmlsStencil<D>& stencil, std::span<const Real>
 template <int D>
 DiffResult<D> wmls_derivatives(std::span<const Vec<D>> offsets, std::span<const Real> differences,
                                Real re, LsWeight weight);
+
+// First-order WMLS gradient (the fit of f_j - f_i by g.(x_j - x_i) alone; docs/WMLS.md,
+// "First-order gradient"): grad f_i = sum_j c_j (f_j - f_i) with
+//   c_j = M^-1 w_j r_j,   M = sum_k w_k r_k r_k^T,   r_j = x_j - x_i,
+// exact for every linear field (sum_j c_j r_j^T = I). It needs only D independent directions,
+// so it stays well posed on the one-sided stencils of a free surface where the second-order
+// fit is truncated. Computed in the scaled variable s = r / re. Returns false and leaves
+// `out` untouched when M is numerically singular (smallest eigenvalue below
+// wmls_rank_tolerance^2 times the largest: the same threshold as the pivots of the
+// second-order fit, squared because M = B^T B).
+template <int D>
+bool wmls_linear_gradient(std::span<const Vec<D>> offsets, Real re, LsWeight weight,
+                          std::span<Vec<D>> out) {
+    Mat<D> M = Mat<D>::Zero();
+    for (const Vec<D>& r : offsets) {
+        const Vec<D> s = r / re;
+        M += ls_weight(r.norm(), re, weight) * (s * s.transpose());
+    }
+    const Eigen::SelfAdjointEigenSolver<Mat<D>> eig(M, Eigen::EigenvaluesOnly);
+    const Vec<D>& ev = eig.eigenvalues(); // ascending
+    if (!(ev[D - 1] > 0) || !(ev[0] > wmls_rank_tolerance * wmls_rank_tolerance * ev[D - 1]))
+        return false;
+    const Mat<D> M_inv = M.inverse();
+    for (std::size_t j = 0; j < offsets.size(); ++j)
+        out[j] = ls_weight(offsets[j].norm(), re, weight) / re * (M_inv * (offsets[j] / re));
+    return true;
+}
 
 extern template Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>
     wmls_design_matrix<2>(std::span<const Vec<2>>, Real, LsWeight);
