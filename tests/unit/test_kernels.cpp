@@ -46,7 +46,7 @@ void check_kernel(const K& k) {
         CHECK(grad_factor(k, r * r) ==
               doctest::Approx(k.dW(r) / r).epsilon(1e-12).scale(k.W(0) / (k.h * k.h)));
     }
-    CHECK(std::isfinite(grad_factor(k, 0.0)));                     // the self pair
+    CHECK(std::isfinite(grad_factor(k, 0.0)));                      // the self pair
     CHECK(grad_factor(k, 1.0001 * k.support() * k.support()) == 0); // outside the support
 }
 

@@ -154,33 +154,20 @@ struct Neighbourhood {
         Dx xi;
         for (int d = 0; d < D; ++d)
             xi[d] = x[i][d];
-        Real s0 = 0, s1 = 0, s2 = 0;
-        if (!list->periodic) {
-#pragma omp simd reduction(+ : s0, s1, s2)
-            for (std::uint32_t p = b; p < e; ++p) {
-                const std::uint32_t j = js[p];
-                Dx dx;
-                Real r2 = 0;
-                for (int d = 0; d < D; ++d) {
-                    dx[d] = xi[d] - X[D * j + d];
-                    r2 += dx[d] * dx[d];
-                }
-                const std::array<Real, N> c = f(j, dx, r2, fs[p]);
-                s0 += c[0];
-                if constexpr (N > 1)
-                    s1 += c[1];
-                if constexpr (N > 2)
-                    s2 += c[2];
-            }
-        } else {
+        // One loop for both kinds of list; `periodic` adds the image shift of each pair.
+        const auto lanes = [&]<bool periodic>() {
             const Vec<D>* shift = list->shift.data();
+            Real s0 = 0, s1 = 0, s2 = 0;
 #pragma omp simd reduction(+ : s0, s1, s2)
             for (std::uint32_t p = b; p < e; ++p) {
                 const std::uint32_t j = js[p];
                 Dx dx;
                 Real r2 = 0;
                 for (int d = 0; d < D; ++d) {
-                    dx[d] = xi[d] + shift[p][d] - X[D * j + d];
+                    Real xid = xi[d];
+                    if constexpr (periodic)
+                        xid += shift[p][d];
+                    dx[d] = xid - X[D * j + d];
                     r2 += dx[d] * dx[d];
                 }
                 const std::array<Real, N> c = f(j, dx, r2, fs[p]);
@@ -190,12 +177,12 @@ struct Neighbourhood {
                 if constexpr (N > 2)
                     s2 += c[2];
             }
-        }
-        sum[0] = s0;
-        if constexpr (N > 1)
-            sum[1] = s1;
-        if constexpr (N > 2)
-            sum[2] = s2;
+            return std::array<Real, 3>{s0, s1, s2};
+        };
+        const std::array<Real, 3> s =
+            list->periodic ? lanes.template operator()<true>() : lanes.template operator()<false>();
+        for (std::size_t n = 0; n < N; ++n)
+            sum[n] = s[n];
         return sum;
     }
 

@@ -63,9 +63,6 @@ SLUICE_FLATTEN void renormalised_density_gradient(const Neighbourhood<D>& nb, co
     }
 }
 
-// The diffusion term a continuity loop evaluates (none when delta = 0).
-enum class DiffusionTerm { none, antuono, fourtakas };
-
 // delta-SPH density diffusion: coefficient and form (case key numerics.density_diffusion).
 template <int D>
 struct DensityDiffusionParams {
@@ -98,11 +95,11 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
                                     std::span<Real> drho_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
-    const bool antuono = diff.delta_h_c0 > 0 && diff.form == DensityDiffusion::antuono;
-    const bool fourtakas = diff.delta_h_c0 > 0 && diff.form == DensityDiffusion::fourtakas;
-    // One loop per diffusion form (a compile-time constant inside), so that no pair computes
+    // One loop per diffusion form (compile-time constants inside), so that no pair computes
     // or gathers what its form does not use.
-    const auto run = [&]<DiffusionTerm form>() {
+    const auto run = [&]<bool diffuse, DensityDiffusion form>() {
+        constexpr bool antuono = diffuse && form == DensityDiffusion::antuono;
+        constexpr bool fourtakas = diffuse && form == DensityDiffusion::fourtakas;
         for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
             if (P.kind[i] != Kind::fluid)
                 continue;
@@ -122,28 +119,28 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
                     for (int d = 0; d < D; ++d) {
                         const Real v_j = wall ? Real(0) : vel[j][d]; // fixed wall: v_j = 0
                         dv_dx += (v_i[d] - v_j) * dx[d];
-                        if constexpr (form == DiffusionTerm::antuono)
+                        if constexpr (antuono)
                             g_dx += (g_i[d] + P.grad_rho[j][d]) * dx[d];
-                        if constexpr (form == DiffusionTerm::fourtakas)
+                        if constexpr (fourtakas)
                             rho_h -= diff.hydrostatic_gradient[d] * dx[d]; // dx = x_i - x_j
                     }
                     const Real div = P.mass[j] * Fij * dv_dx;
                     Real diffusion = 0;
-                    if constexpr (form == DiffusionTerm::antuono)
+                    if constexpr (antuono)
                         diffusion = P.volume[j] * (-2 * (P.rho[j] - rho_i) * Fij - g_dx * Fij);
-                    if constexpr (form == DiffusionTerm::fourtakas)
+                    if constexpr (fourtakas)
                         diffusion = P.volume[j] * (-2 * (P.rho[j] - rho_i - rho_h) * Fij);
                     return {div, wall ? Real(0) : diffusion}; // diffusion over fluid pairs only
                 });
             drho_out[i] = sums[0] + diff.delta_h_c0 * sums[1];
         }
     };
-    if (antuono)
-        run.template operator()<DiffusionTerm::antuono>();
-    else if (fourtakas)
-        run.template operator()<DiffusionTerm::fourtakas>();
+    if (diff.delta_h_c0 <= 0)
+        run.template operator()<false, DensityDiffusion::antuono>();
+    else if (diff.form == DensityDiffusion::antuono)
+        run.template operator()<true, DensityDiffusion::antuono>();
     else
-        run.template operator()<DiffusionTerm::none>();
+        run.template operator()<true, DensityDiffusion::fourtakas>();
 }
 
 // Pressure from the equation of state for the fluid particles of cell c, and the two

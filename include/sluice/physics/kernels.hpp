@@ -175,8 +175,8 @@ inline double kernel_support_factor(KernelType type) {
 }
 
 // The radial factor F(r) = (dW/dr)/r of the pair at squared distance r2, so that
-// grad_i W_ij = F dx with dx = x_i - x_j. Kernels with a closed form of dW/dr / r (Wendland)
-// give it without a division; for the particle itself F dx is zero whatever F is. Neighbour
+// grad_i W_ij = F dx with dx = x_i - x_j. Kernels with a closed form of dW/dr / r (Wendland, cubic
+// spline) give it without a division; for the particle itself F dx is zero whatever F is. Neighbour
 // lists store F once per step (Neighbourhood::sum_over_pairs).
 template <class K>
 inline Real grad_factor(const K& kernel, Real r2) {

@@ -43,6 +43,7 @@ SLUICE_FLATTEN void acceleration(const Neighbourhood<D>& nb, const K& kernel,
             continue;
         const Real rho_i = P.rho[i];
         const Real p_over_rho2_i = P.p_over_rho2[i];
+        const Real p_clipped_over_rho2_i = std::max(P.p[i], prm.p_floor) / (rho_i * rho_i);
         const Vec<D> v_i = P.v[i];
         const Vec<D> acc = nb.sum_over_pairs(
             adj, i, F, Vec<D>(Vec<D>::Zero()),
@@ -55,9 +56,8 @@ SLUICE_FLATTEN void acceleration(const Neighbourhood<D>& nb, const K& kernel,
                 const bool wall = P.kind[j] == Kind::wall;
                 Real s; // the pair's coefficient of -m_j grad W
                 if (wall) {
-                    const Real pi = std::max(P.p[i], prm.p_floor);
                     const Real pj = std::max(P.p[j], prm.p_floor);
-                    s = pi / (rho_i * rho_i) + pj / (rho_j * rho_j);
+                    s = p_clipped_over_rho2_i + pj / (rho_j * rho_j);
                 } else {
                     s = p_over_rho2_i + P.p_over_rho2[j];
                 }
