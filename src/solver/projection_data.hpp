@@ -24,7 +24,7 @@ template <int D>
 struct ProjectionGroup {
     std::vector<Real> lap;            // WMLS Laplacian coefficient L_ij (fluid rows)
     std::vector<Vec<D>> grad;         // WMLS gradient coefficient (fluid rows): divergence in P3
-    std::vector<Vec<D>> grad_correct; // gradient coefficient of the correction P7
+    std::vector<Vec<D>> grad_correct; // correction P7's coefficient (first-order option only)
     std::vector<Real> a;              // coefficient a_ij of the scaled system (every row)
     std::vector<Vec<D>> scratch_offsets, scratch_linear;
     std::vector<std::uint32_t> scratch_pairs;

@@ -145,7 +145,8 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
             [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; });
         G.lap.resize(list.pairs);
         G.grad.resize(list.pairs);
-        G.grad_correct.resize(list.pairs);
+        if (cfg_.projection.correction_gradient == CorrectionGradient::first_order)
+            G.grad_correct.resize(list.pairs);
         G.a.resize(list.pairs);
     }
     const auto offset_of = [&](std::uint32_t i, std::uint32_t p) -> Vec<D> {
@@ -190,7 +191,6 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                 for (std::uint32_t p = b; p < e; ++p) {
                     G.lap[p] = 0;
                     G.grad[p].setZero();
-                    G.grad_correct[p].setZero();
                     const std::uint32_t j = list.j[p];
                     if (j == i)
                         continue;
@@ -211,12 +211,13 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                     const std::uint32_t p = G.scratch_pairs[m];
                     G.lap[p] = st.laplacian(0, static_cast<Eigen::Index>(m));
                     G.grad[p] = st.gradient.col(static_cast<Eigen::Index>(m));
-                    G.grad_correct[p] = G.grad[p];
                     lap_u += G.lap[p] * (P_.v[list.j[p]] - P_.v[i]);
                 }
                 if (cfg_.projection.correction_gradient == CorrectionGradient::first_order) {
                     // P7's gradient from the first-order fit; where that is singular too,
                     // the second-order coefficients stay.
+                    for (std::uint32_t p = b; p < e; ++p)
+                        G.grad_correct[p] = G.grad[p];
                     G.scratch_linear.resize(G.scratch_pairs.size());
                     if (physics::wmls_linear_gradient<D>(offsets, re, weight,
                                                          std::span<Vec<D>>(G.scratch_linear)))
@@ -506,6 +507,9 @@ void Simulation<D>::correct_stage(int group) {
     const auto gi = static_cast<std::size_t>(group);
     const NeighbourList<D>& list = lists_[gi];
     const ProjectionGroup<D>& G = d.groups[gi];
+    const std::vector<Vec<D>>& grad_coefficient =
+        cfg_.projection.correction_gradient == CorrectionGradient::first_order ? G.grad_correct
+                                                                               : G.grad;
     const std::uint32_t lo = list.first;
     const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
     TimeStepLimits lim;
@@ -528,7 +532,7 @@ void Simulation<D>::correct_stage(int group) {
             p_ref = physics::gradient_reference(p_ref, P_.p[list.j[p]]);
         Vec<D> grad = Vec<D>::Zero();
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            grad += G.grad_correct[p] * (physics::gradient_pressure(P_.p[list.j[p]]) - p_ref);
+            grad += grad_coefficient[p] * (physics::gradient_pressure(P_.p[list.j[p]]) - p_ref);
         Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, cfg_.rho0, dt_);
         const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
