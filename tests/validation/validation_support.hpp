@@ -3,6 +3,8 @@
 // reference CSV files (comment lines start with '#').
 #include "sluice/io/case_reader.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -50,6 +52,33 @@ inline double interpolate(const std::vector<double>& xs, const std::vector<doubl
             return ys[k - 1] + w * (ys[k] - ys[k - 1]);
         }
     return ys.back();
+}
+
+// RMS relative deviation (Z_sim - Z) / Z of a simulated surge front Z_sim(T), sampled as
+// (Ts, Zs), from the rows (label, T, Z) of a reference CSV with T_lo < T <= T_hi and, unless
+// `label` is empty, that label. `print` lists every point compared.
+struct FrontDeviation {
+    double rms = 0;
+    int points = 0;
+};
+inline FrontDeviation front_deviation(const std::vector<double>& Ts, const std::vector<double>& Zs,
+                                      const std::string& csv, double T_lo, double T_hi,
+                                      const std::string& label = "", bool print = false) {
+    double sum2 = 0;
+    int n = 0;
+    for (const auto& row : read_csv(csv)) {
+        const double T = std::stod(row[1]), Z = std::stod(row[2]);
+        if ((!label.empty() && row[0] != label) || T <= T_lo || T > T_hi)
+            continue;
+        const double Zsim = interpolate(Ts, Zs, T);
+        const double rel = (Zsim - Z) / Z;
+        if (print)
+            std::printf("  %-6s T = %.3f  Z_exp = %.3f  Z_sim = %.3f  (%+.1f %%)\n", row[0].c_str(),
+                        T, Z, Zsim, 100 * rel);
+        sum2 += rel * rel;
+        ++n;
+    }
+    return {n > 0 ? std::sqrt(sum2 / n) : 0.0, n};
 }
 
 } // namespace sluice::testing
