@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 unexpected failure, 2 bad case file, bad command line or a
 // checkpoint that cannot continue the case, 3 the run failed physically (RunError),
 // 4 stopped on request (SIGTERM/SIGINT or a stop file) after writing a checkpoint.
+#include "sluice/core/types.hpp"
 #include "sluice/io/case_reader.hpp"
 #include "sluice/io/errors.hpp"
 #include "sluice/solver/case_check.hpp"
@@ -20,6 +21,7 @@
 #include <exception>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -38,7 +40,8 @@ bool launched_by_mpi() {
 
 std::string version_string() {
     const std::string rev = sluice::git_revision;
-    return fmt::format("sluice {} ({})", sluice::version, rev.empty() ? "unknown revision" : rev);
+    return fmt::format("sluice {} ({}{})", sluice::version, rev.empty() ? "unknown revision" : rev,
+                       std::is_same_v<sluice::Real, float> ? ", single precision" : "");
 }
 
 std::string human_bytes(double bytes) {

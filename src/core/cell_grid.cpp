@@ -19,7 +19,7 @@ CellGrid<D> CellGrid<D>::make(const Vec<D>& lo, const Vec<D>& hi, Real min_edge,
         if (periodic[d] && n < 3)
             throw std::invalid_argument("periodic axis shorter than 3 kernel supports");
         g.dims[d] = n;
-        g.edge[d] = g.length[d] / n;
+        g.edge[d] = g.length[d] / Real(n);
         g.inv_edge[d] = 1 / g.edge[d];
     }
     return g;

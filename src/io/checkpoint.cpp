@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <type_traits>
 
 namespace sluice {
 namespace fs = std::filesystem;
@@ -69,9 +70,15 @@ void write_column(hid_t file, const char* name, const std::vector<T>& data, std:
               std::string("write dataset ") + name);
 }
 
+// Particle columns are stored as 64-bit floats whatever sluice::Real is; HDF5 converts from and
+// to the in-memory type (exact both ways for a float build).
+hid_t native_real() {
+    return std::is_same_v<Real, float> ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE;
+}
+
 template <int D>
-std::vector<double> flat(const std::vector<Vec<D>>& v) {
-    std::vector<double> out(D * v.size());
+std::vector<Real> flat(const std::vector<Vec<D>>& v) {
+    std::vector<Real> out(D * v.size());
     for (std::size_t i = 0; i < v.size(); ++i)
         for (int a = 0; a < D; ++a)
             out[D * i + static_cast<std::size_t>(a)] = v[i][a];
@@ -114,14 +121,14 @@ void write_h5(const std::string& path, const Checkpoint<D>& c) {
         kinds[i] = static_cast<std::uint8_t>(P.kind[i]);
     write_column(f, "id", ids, 1, H5T_NATIVE_UINT64, H5T_STD_U64LE);
     write_column(f, "kind", kinds, 1, H5T_NATIVE_UINT8, H5T_STD_U8LE);
-    write_column(f, "x", flat<D>(P.x), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
-    write_column(f, "x_ref", flat<D>(P.x_ref), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
-    write_column(f, "v", flat<D>(P.v), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
-    write_column(f, "v_half", flat<D>(P.v_half), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
-    write_column(f, "a", flat<D>(P.a), D, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
-    write_column(f, "rho", P.rho, 1, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
-    write_column(f, "mass", P.mass, 1, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
-    write_column(f, "p", P.p, 1, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
+    write_column(f, "x", flat<D>(P.x), D, native_real(), H5T_IEEE_F64LE);
+    write_column(f, "x_ref", flat<D>(P.x_ref), D, native_real(), H5T_IEEE_F64LE);
+    write_column(f, "v", flat<D>(P.v), D, native_real(), H5T_IEEE_F64LE);
+    write_column(f, "v_half", flat<D>(P.v_half), D, native_real(), H5T_IEEE_F64LE);
+    write_column(f, "a", flat<D>(P.a), D, native_real(), H5T_IEEE_F64LE);
+    write_column(f, "rho", P.rho, 1, native_real(), H5T_IEEE_F64LE);
+    write_column(f, "mass", P.mass, 1, native_real(), H5T_IEEE_F64LE);
+    write_column(f, "p", P.p, 1, native_real(), H5T_IEEE_F64LE);
     const OutputState& o = c.output;
     write_column(f, "probe_next", o.probe_next, 1, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
     write_column(f, "probe_bytes", o.probe_bytes, 1, H5T_NATIVE_UINT64, H5T_STD_U64LE);
@@ -207,7 +214,7 @@ std::vector<T> read_column(hid_t file, const char* name, std::size_t cols, hid_t
 }
 
 template <int D>
-std::vector<Vec<D>> vectors(const std::vector<double>& flat_values) {
+std::vector<Vec<D>> vectors(const std::vector<Real>& flat_values) {
     std::vector<Vec<D>> out(flat_values.size() / D);
     for (std::size_t i = 0; i < out.size(); ++i)
         for (int a = 0; a < D; ++a)
@@ -272,16 +279,16 @@ Checkpoint<D> read_h5(const std::string& path, const std::string& case_fingerpri
         P.kind[i] = static_cast<Kind>(kinds[i]);
     }
     const auto vec = [&](const char* name) {
-        return vectors<D>(read_column<double>(f, name, D, H5T_NATIVE_DOUBLE, n));
+        return vectors<D>(read_column<Real>(f, name, D, native_real(), n));
     };
     P.x = vec("x");
     P.x_ref = vec("x_ref");
     P.v = vec("v");
     P.v_half = vec("v_half");
     P.a = vec("a");
-    P.rho = read_column<double>(f, "rho", 1, H5T_NATIVE_DOUBLE, n);
-    P.mass = read_column<double>(f, "mass", 1, H5T_NATIVE_DOUBLE, n);
-    P.p = read_column<double>(f, "p", 1, H5T_NATIVE_DOUBLE, n);
+    P.rho = read_column<Real>(f, "rho", 1, native_real(), n);
+    P.mass = read_column<Real>(f, "mass", 1, native_real(), n);
+    P.p = read_column<Real>(f, "p", 1, native_real(), n);
     OutputState& o = c.output;
     o.probe_next = read_column<double>(f, "probe_next", 1, H5T_NATIVE_DOUBLE);
     o.probe_bytes =

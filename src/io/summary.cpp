@@ -1,12 +1,14 @@
 // summary.json, written atomically at the end of a successful run.
 #include "sluice/io/summary.hpp"
 
+#include "sluice/core/types.hpp"
 #include "sluice/version.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
+#include <type_traits>
 
 namespace sluice {
 
@@ -28,6 +30,7 @@ nlohmann::json make_summary(const CaseConfig& cfg, const RunResult& r, int threa
     j["ranks"] = ranks;
     j["version"] = sluice::version;
     j["git_revision"] = sluice::git_revision;
+    j["precision"] = std::is_same_v<Real, float> ? "float" : "double"; // SLUICE_PRECISION
     j["mass_initial"] = r.mass_initial;
     j["mass_final"] = r.mass_final;
     // Relative mass drift: zero for a conservative scheme, the first thing to look at.

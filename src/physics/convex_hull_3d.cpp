@@ -15,8 +15,8 @@ extern "C" {
 namespace sluice {
 namespace {
 
-constexpr Real kRankTolerance = 1e-10;    // singular value / largest one below this: flat
-constexpr Real kBoundaryTolerance = 1e-9; // distance to a facet / set size: on the facet
+constexpr Real kRankTolerance = Real(1e-10);    // singular value / largest one below this: flat
+constexpr Real kBoundaryTolerance = Real(1e-9); // distance to a facet / set size: on the facet
 
 std::vector<int> distinct_points(std::span<const Vec<3>> p) {
     std::vector<int> idx(p.size());

@@ -14,7 +14,7 @@ namespace sluice::physics {
 namespace {
 
 constexpr Real two_pi = 2 * std::numbers::pi_v<Real>;
-constexpr Real gap_tolerance = 1e-9; // rad
+constexpr Real gap_tolerance = Real(1e-9); // rad
 
 // Open arc (centre - half, centre + half) on a circle parametrised by angle.
 struct Arc {

@@ -30,7 +30,7 @@ void for_each_lattice_site(const std::array<double, D>& lo, const std::array<int
         for (int d = 0; d < D; ++d) {
             k[d] = static_cast<int>(r % static_cast<std::size_t>(n[d]));
             r /= static_cast<std::size_t>(n[d]);
-            x[d] = lo[d] + (k[d] + 0.5) * dx;
+            x[d] = Real(lo[d] + (k[d] + 0.5) * dx);
         }
         f(std::as_const(k), std::as_const(x));
     }
@@ -53,7 +53,7 @@ double settled_height(const Eos& eos, double g, double sigma_total, double sigma
     constexpr int panels = 32;
     const double step = sigma_below / panels;
     const auto f = [&](double s) {
-        return 1.0 / eos.density(eos.p_background + g * (sigma_total - s));
+        return 1.0 / eos.density(Real(eos.p_background + g * (sigma_total - s)));
     };
     double sum = f(0) + f(sigma_below);
     for (int k = 1; k < panels; ++k)
@@ -150,7 +150,7 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
     const double volume = std::pow(dx, D);
     Vec<D> g;
     for (int d = 0; d < D; ++d)
-        g[d] = cfg.gravity[d];
+        g[d] = Real(cfg.gravity[d]);
     const int up = vertical_axis<D>();
     for (const FluidBlock& b : cfg.blocks) {
         std::array<double, D> lo{};
@@ -187,11 +187,11 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
                 return;
             const double lattice_up = x[up];
             if (settle)
-                x[up] = b.lo[up] +
-                        settled_height(eos, g_abs, sigma_total, cfg.rho0 * (x[up] - b.lo[up]));
+                x[up] = Real(b.lo[up] + settled_height(eos, g_abs, sigma_total,
+                                                       cfg.rho0 * (x[up] - b.lo[up])));
             Vec<D> v;
             for (int d = 0; d < D; ++d)
-                v[d] = b.velocity[d];
+                v[d] = Real(b.velocity[d]);
             double p = eos.p_background;
             // Hydrostatic pressure: the weight of the water above the particle, rho0 g times
             // the height of lattice cells above its lattice centre (settling keeps that mass).
@@ -202,8 +202,8 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
                 // on the block's own period L (Taylor & Green 1937), x measured from lo.
                 const double k = 2 * std::numbers::pi / (b.hi[0] - b.lo[0]);
                 const double X = k * (x[0] - b.lo[0]), Y = k * (x[1] - b.lo[1]);
-                v[0] += -b.amplitude * std::cos(X) * std::sin(Y);
-                v[1] += b.amplitude * std::sin(X) * std::cos(Y);
+                v[0] += Real(-b.amplitude * std::cos(X) * std::sin(Y));
+                v[1] += Real(b.amplitude * std::sin(X) * std::cos(Y));
                 p +=
                     -cfg.rho0 * b.amplitude * b.amplitude / 4 * (std::cos(2 * X) + std::cos(2 * Y));
             }
@@ -212,24 +212,24 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
             // block's edge (see the header for the formulas).
             const double xi = at[0] - centre[0], eta = at[1] - centre[1];
             if (b.profile == VelocityProfile::rotating) {
-                v[0] += -b.angular_velocity * eta;
-                v[1] += b.angular_velocity * xi;
+                v[0] += Real(-b.angular_velocity * eta);
+                v[1] += Real(b.angular_velocity * xi);
             } else if (b.profile == VelocityProfile::strain) {
-                v[0] += -b.strain_rate * xi;
-                v[1] += b.strain_rate * eta;
+                v[0] += Real(-b.strain_rate * xi);
+                v[1] += Real(b.strain_rate * eta);
             }
             if (b.profile == VelocityProfile::rotating && b.shape == BlockShape::box)
                 p += rotating_rectangle_pressure(cfg.rho0, b.angular_velocity, 2 * half[0],
                                                  2 * half[1], at[0] - b.lo[0], at[1] - b.lo[1]);
             else if (profile_trace_g2(b) != 0)
                 p += ellipse_pressure(cfg.rho0, profile_trace_g2(b), half[0], half[1], xi, eta);
-            const double rho = eos.density(p);
+            const double rho = eos.density(Real(p));
             // Continuity: the mass of a lattice cell of the reference fluid, so a column holds
             // the mass of its height and the initial pressure lives in rho alone. Summation:
             // density comes from masses and positions, so the masses carry the initial field.
             const double m =
                 cfg.density == DensityScheme::summation ? rho * volume : cfg.rho0 * volume;
-            P.push_back(static_cast<ParticleId>(P.size()), Kind::fluid, x, v, rho, m);
+            P.push_back(static_cast<ParticleId>(P.size()), Kind::fluid, x, v, Real(rho), Real(m));
         });
     }
 }
@@ -251,8 +251,8 @@ void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
             inside_tank = inside_tank && x[d] > cfg.tank_lo[d] && x[d] < cfg.tank_hi[d];
         if (inside_tank)
             return;
-        P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(), cfg.rho0,
-                    mass);
+        P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(),
+                    Real(cfg.rho0), Real(mass));
     });
     // Solid obstacles: the box's lattice sites, `layers` deep from its surface.
     for (const WallBox& b : cfg.boxes) {
@@ -265,7 +265,7 @@ void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
         for_each_lattice_site<D>(blo, bn, dx, [&](const std::array<int, D>& k, const Vec<D>& x) {
             if (in_box_shell<D>(k, bn, layers))
                 P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(),
-                            cfg.rho0, mass);
+                            Real(cfg.rho0), Real(mass));
         });
     }
 }

@@ -21,7 +21,7 @@ std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support
         add_radius_set();
         return out;
     }
-    const Real rc = selection.candidate_radius_over_dx * dx;
+    const Real rc = Real(selection.candidate_radius_over_dx) * dx;
     std::vector<int> candidate;
     std::vector<Vec<D>> r;
     for (std::size_t j = 0; j < offsets.size(); ++j) {

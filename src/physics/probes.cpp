@@ -94,7 +94,7 @@ std::vector<std::size_t> bulk_fluid(const Particles<D>& ps, Real dx) {
     if (n == 0)
         return {};
 
-    const Real link = 1.5 * dx;
+    const Real link = Real(1.5) * dx;
     const Real link2 = link * link;
 
     // Bucket particles by cell (cell size = link distance, so linked pairs are in adjacent

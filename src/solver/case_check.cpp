@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 namespace sluice {
 namespace {
@@ -30,6 +31,13 @@ std::pair<double, double> height_range(const Triple& lo, const Triple& hi, const
 } // namespace
 
 void check_runnable(const CaseConfig& cfg, const CaseInfo& info) {
+    // The projection scheme's geometry (convex hulls, WMLS rank tests, the BiCGSTAB solve to
+    // 1e-8) works with tolerances below single precision's resolution; it is validated in
+    // double only (docs/ARCHITECTURE.md, "Dimension and precision").
+    if (std::is_same_v<Real, float> && cfg.scheme == Scheme::projection)
+        throw CaseError(cfg.source_file, "numerics.scheme",
+                        "the projection scheme needs a double-precision build of sluice (this "
+                        "one was built with SLUICE_PRECISION=float)");
     for (std::size_t a = 0; a < static_cast<std::size_t>(cfg.dimension); ++a)
         if (cfg.periodic[a] && (cfg.domain_hi[a] - cfg.domain_lo[a]) < 3 * info.support)
             throw CaseError(cfg.source_file, "domain.periodic",

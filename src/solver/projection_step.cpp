@@ -34,7 +34,7 @@ std::vector<Vec<D>> lattice_offsets(Real dx, Real re) {
         for (int d = 0; d < D; ++d) {
             k[static_cast<std::size_t>(d)] = r % n - m;
             r /= n;
-            o[d] = k[static_cast<std::size_t>(d)] * dx;
+            o[d] = Real(k[static_cast<std::size_t>(d)]) * dx;
         }
         const Real len = o.norm();
         if (len > 0 && len < re)
@@ -49,20 +49,20 @@ template <int D>
 void Simulation<D>::init_projection() {
     proj_ = std::make_unique<ProjectionData<D>>();
     ProjectionData<D>& d = *proj_;
-    d.re = kernel_support_factor(cfg_.kernel) * h_;
-    d.surface_diameter = cfg_.projection.surface_diameter_over_dx * cfg_.dx;
-    d.collision_distance = physics::wall_collision_distance_over_dx * cfg_.dx;
-    const std::vector<Vec<D>> lattice = lattice_offsets<D>(cfg_.dx, d.re);
+    d.re = Real(kernel_support_factor(cfg_.kernel) * h_);
+    d.surface_diameter = Real(cfg_.projection.surface_diameter_over_dx * cfg_.dx);
+    d.collision_distance = Real(physics::wall_collision_distance_over_dx * cfg_.dx);
+    const std::vector<Vec<D>> lattice = lattice_offsets<D>(Real(cfg_.dx), d.re);
     for (const Vec<D>& o : lattice)
         d.n0 += physics::ls_weight(o.norm(), d.re, d.weight);
     const auto st = physics::wmls_stencil<D>(lattice, d.re, d.weight);
     d.lattice_sum = st.laplacian.sum();
     // Incompressible: every fluid particle keeps rho0 and the volume dx^D.
-    const Real volume = std::pow(cfg_.dx, D);
+    const Real volume = Real(std::pow(cfg_.dx, D));
     for (std::size_t i = 0; i < P_.size(); ++i)
         if (P_.kind[i] == Kind::fluid) {
-            P_.rho[i] = cfg_.rho0;
-            P_.mass[i] = cfg_.rho0 * volume;
+            P_.rho[i] = Real(cfg_.rho0);
+            P_.mass[i] = Real(cfg_.rho0) * volume;
         }
     d.main_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
     d.solver_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
@@ -168,7 +168,7 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                     const Real w = physics::ls_weight(off.norm(), re, physics::LsWeight::smooth);
                     G.a[p] = w;
                     wsum += w;
-                    rhs += w * physics::wall_row_term<D>(cfg_.rho0, momentum_.gravity, -off);
+                    rhs += w * physics::wall_row_term<D>(Real(cfg_.rho0), momentum_.gravity, -off);
                 }
                 for (std::uint32_t p = b; p < e; ++p)
                     G.a[p] = wsum > 0 ? G.a[p] / wsum : 0;
@@ -226,12 +226,13 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                 }
                 const bool surface =
                     !st.ok || physics::is_free_surface<D>(offsets, d.surface_diameter) ||
-                    physics::below_surface_density(n, d.n0, cfg_.projection.surface_density_ratio);
+                    physics::below_surface_density(n, d.n0,
+                                                   Real(cfg_.projection.surface_density_ratio));
                 d.row[i] = surface ? PpeRow::surface : PpeRow::fluid;
                 // A stencil that cannot fit second derivatives gives no viscous term.
                 d.u_star[i] = physics::predicted_velocity<D>(v_i, st.ok ? lap_u : Vec<D>::Zero(),
-                                                             cfg_.viscosity / cfg_.rho0,
-                                                             momentum_.gravity, dt_);
+                                                             Real(cfg_.viscosity / cfg_.rho0),
+                                                             momentum_.gravity, Real(dt_));
                 continue;
             }
             // Stage 1.
@@ -249,8 +250,9 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                 d.bhat[i] = 0;
                 continue;
             }
-            const Real src = physics::ppe_source(cfg_.rho0, dt_, cfg_.projection.gamma, div,
-                                                 d.number_density[i], d.n0);
+            const Real src =
+                physics::ppe_source(Real(cfg_.rho0), Real(dt_), Real(cfg_.projection.gamma), div,
+                                    d.number_density[i], d.n0);
             for (std::uint32_t p = b; p < e; ++p)
                 G.a[p] = G.lap[p] / sum;
             d.bhat[i] = -src / sum;
@@ -289,16 +291,16 @@ void Simulation<D>::solver_stage(int stage, int group) {
                 if (d.first_direction) {
                     d.dir[i] = d.r[i];
                 } else {
-                    x[i] += d.omega * d.s[i];
-                    d.r[i] = d.s[i] - d.omega * d.t[i];
+                    x[i] += Real(d.omega) * d.s[i];
+                    d.r[i] = d.s[i] - Real(d.omega) * d.t[i];
                     q[0] += d.r[i] * d.r[i];
-                    d.dir[i] = d.r[i] + d.beta * (d.dir[i] - d.omega * d.v[i]);
+                    d.dir[i] = d.r[i] + Real(d.beta) * (d.dir[i] - Real(d.omega) * d.v[i]);
                 }
                 d.y[i] = d.dir[i];
                 break;
             case SolverPhase::bicg_half:
-                d.s[i] = d.r[i] - d.alpha * d.v[i];
-                x[i] += d.alpha * d.dir[i];
+                d.s[i] = d.r[i] - Real(d.alpha) * d.v[i];
+                x[i] += Real(d.alpha) * d.dir[i];
                 d.y[i] = d.s[i];
                 break;
             }
@@ -307,7 +309,7 @@ void Simulation<D>::solver_stage(int stage, int group) {
     if (d.phase == SolverPhase::set_zero)
         return;
     const bool sor = d.phase == SolverPhase::sor_sweep;
-    const Real omega = cfg_.projection.relaxation;
+    const Real omega = Real(cfg_.projection.relaxation);
     for (std::uint32_t i = lo; i < hi; ++i) {
         const std::uint32_t k = i - lo;
         Real sum = 0;
@@ -533,7 +535,7 @@ void Simulation<D>::correct_stage(int group) {
         Vec<D> grad = Vec<D>::Zero();
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             grad += grad_coefficient[p] * (physics::gradient_pressure(P_.p[list.j[p]]) - p_ref);
-        Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, cfg_.rho0, dt_);
+        Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, Real(cfg_.rho0), Real(dt_));
         const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             if (P_.kind[list.j[p]] == Kind::wall) {
@@ -545,7 +547,7 @@ void Simulation<D>::correct_stage(int group) {
         Vec<D> x = P_.x[i] + dt_ * v;
         if (!planes_.empty()) {
             Vec<D> unused = v;
-            reflect(planes_, cfg_.restitution, x, unused, v);
+            reflect(planes_, Real(cfg_.restitution), x, unused, v);
         }
         grid_.wrap(x);
         P_.a[i] = (v - P_.v[i]) / dt_;

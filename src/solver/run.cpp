@@ -57,13 +57,13 @@ double probe_value(const Simulation<D>& sim, const Particles<D>& P, const ProbeC
     case ProbeType::pressure: {
         Vec<D> point;
         for (int d = 0; d < D; ++d)
-            point[d] = probe.position[d];
+            point[d] = Real(probe.position[d]);
         return pressure_probe(P, sim.kernel(), point);
     }
     case ProbeType::water_level:
-        return water_level(P, dx, probe.x);
+        return water_level(P, Real(dx), Real(probe.x));
     case ProbeType::surge_front:
-        return surge_front(P, dx);
+        return surge_front(P, Real(dx));
     }
     return std::nan("");
 }

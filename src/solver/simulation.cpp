@@ -27,7 +27,7 @@ template <int D>
 Vec<D> to_vec(const Triple& t) {
     Vec<D> v;
     for (int d = 0; d < D; ++d)
-        v[d] = t[d];
+        v[d] = Real(t[d]);
     return v;
 }
 
@@ -43,7 +43,7 @@ std::vector<Plane<D>> reflective_planes(const CaseConfig& cfg) {
                     cfg.tank_faces.end())
                     continue;
                 Plane<D> pl;
-                pl.point[d] = side == 0 ? cfg.tank_lo[d] : cfg.tank_hi[d];
+                pl.point[d] = Real(side == 0 ? cfg.tank_lo[d] : cfg.tank_hi[d]);
                 pl.normal[d] = side == 0 ? 1.0 : -1.0;
                 planes.push_back(pl);
             }
@@ -66,27 +66,28 @@ Simulation<D>::~Simulation() {
 template <int D>
 Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
                           const Checkpoint<D>* resume)
-    : cfg_(cfg), kernel_(make_kernel<D>(cfg.kernel, cfg.h_over_dx * cfg.dx)),
+    : cfg_(cfg), kernel_(make_kernel<D>(cfg.kernel, Real(cfg.h_over_dx * cfg.dx))),
       opts_(std::move(opts)), comm_(tasks::Comm::world()) {
     h_ = cfg.h_over_dx * cfg.dx;
     const double support = kernel_support_factor(cfg.kernel) * h_;
     // The projection step builds its own lists every step (its operators use another radius).
-    skin_ = cfg.scheme == Scheme::projection ? 0.0 : cfg.neighbour_skin * cfg.dx;
-    eos_ = Eos{cfg.eos, cfg.rho0, cfg.sound_speed, cfg.gamma, cfg.background_pressure};
+    skin_ = cfg.scheme == Scheme::projection ? Real(0) : Real(cfg.neighbour_skin * cfg.dx);
+    eos_ = Eos{cfg.eos, Real(cfg.rho0), Real(cfg.sound_speed), Real(cfg.gamma),
+               Real(cfg.background_pressure)};
 
     momentum_.gravity = to_vec<D>(cfg.gravity);
-    momentum_.mu = cfg.viscosity;
-    momentum_.alpha = cfg.artificial_viscosity;
-    momentum_.c0 = cfg.sound_speed;
-    momentum_.h = h_;
+    momentum_.mu = Real(cfg.viscosity);
+    momentum_.alpha = Real(cfg.artificial_viscosity);
+    momentum_.c0 = Real(cfg.sound_speed);
+    momentum_.h = Real(h_);
     continuity_ = cfg.density == DensityScheme::continuity;
     delta_h_c0_ = continuity_ ? cfg.delta_sph * h_ * cfg.sound_speed : 0.0;
-    diffusion_ = DensityDiffusionParams<D>{delta_h_c0_, cfg.density_diffusion,
-                                           cfg.rho0 * momentum_.gravity /
-                                               (cfg.sound_speed * cfg.sound_speed)};
+    diffusion_ = DensityDiffusionParams<D>{Real(delta_h_c0_), cfg.density_diffusion,
+                                           Real(cfg.rho0) * momentum_.gravity /
+                                               Real(cfg.sound_speed * cfg.sound_speed)};
     density_gradient_ = delta_h_c0_ > 0 && cfg.density_diffusion == DensityDiffusion::antuono;
     momentum_.wall_viscous = cfg.no_slip;
-    momentum_.p_floor = cfg.background_pressure;
+    momentum_.p_floor = Real(cfg.background_pressure);
 
     ts_params_ =
         TimeStepParams{h_, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl, cfg.force_cfl};
@@ -98,7 +99,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         add_wall_particles<D>(cfg, layers, P_);
     // A fluid particle may sit inside the dummy-wall layers for a moment; it has escaped only
     // once it is behind all of them.
-    const double escape_margin = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
+    const Real escape_margin = cfg.walls == WallModel::dummy ? Real(layers * cfg.dx) : Real(0);
     for (std::size_t i = 0; i < P_.size(); ++i)
         P_.p[i] = eos_.pressure(P_.rho[i]);
 
@@ -110,22 +111,22 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         bounds_.hi[d] = domain_hi_[d] + escape_margin;
         bounds_.periodic[static_cast<std::size_t>(d)] = cfg.periodic[static_cast<std::size_t>(d)];
     }
-    bounds_.max_speed = cfg.max_speed;
-    bounds_.min_density = cfg.min_density;
-    bounds_.max_density = cfg.max_density;
+    bounds_.max_speed = Real(cfg.max_speed);
+    bounds_.min_density = Real(cfg.min_density);
+    bounds_.max_density = Real(cfg.max_density);
     Vec<D> lo = domain_lo_, hi = domain_hi_;
     std::array<bool, D> periodic{};
     for (int d = 0; d < D; ++d) {
         periodic[d] = cfg.periodic[d];
         if (periodic[d])
             continue;
-        double wall = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
-        lo[d] = std::min(lo[d], cfg.tank_lo[d] - wall) - support;
-        hi[d] = std::max(hi[d], cfg.tank_hi[d] + wall) + support;
+        const double wall = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
+        lo[d] = Real(std::min(double(lo[d]), cfg.tank_lo[d] - wall) - support);
+        hi[d] = Real(std::max(double(hi[d]), cfg.tank_hi[d] + wall) + support);
     }
     try {
         // With a Verlet skin a cell must hold every pair within support + skin of the sort.
-        grid_ = CellGrid<D>::make(lo, hi, support + skin_, periodic);
+        grid_ = CellGrid<D>::make(lo, hi, Real(support + skin_), periodic);
     } catch (const std::invalid_argument& e) {
         throw CaseError(cfg.source_file, "domain.periodic", e.what());
     }
@@ -155,7 +156,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         steps_ = static_cast<long>(st.step);
         dt_ = st.dt;
         dt_prev_ = st.dt_prev;
-        u_max_ = st.u_max;
+        u_max_ = Real(st.u_max);
         limits_ = TimeStepLimits{st.limit_acoustic, st.limit_viscous, st.limit_force};
     }
 
@@ -208,7 +209,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
 
 template <int D>
 TimeStepLimits Simulation<D>::limits_at_rest() const {
-    Real g = 0;
+    double g = 0;
     for (int d = 0; d < D; ++d)
         g += cfg_.gravity[d] * cfg_.gravity[d];
     Real vmax = 0;
@@ -402,14 +403,14 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
     case StageKind::walls:
         for (CellIndex c : cells)
             dummy_wall_state(nb, kernel, eos_, momentum_.gravity, cfg_.no_slip,
-                             std::pow(cfg_.dx, D), c, P_);
+                             Real(std::pow(cfg_.dx, D)), c, P_);
         break;
     case StageKind::accel:
         for (CellIndex c : cells) {
             acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a));
             if (cfg_.shifting > 0) {
-                const ShiftingParams sp{cfg_.shifting * u_max_ * h_ * dt_, kernel.W(cfg_.dx),
-                                        0.1 * cfg_.dx};
+                const ShiftingParams sp{Real(cfg_.shifting * u_max_ * h_ * dt_),
+                                        kernel.W(Real(cfg_.dx)), Real(0.1 * cfg_.dx)};
                 particle_shift(nb, kernel, sp, c, P_, std::span<Vec<D>>(P_.shift));
             }
         }
@@ -419,7 +420,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
         for (CellIndex c : cells)
             for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
                 if (P_.kind[i] == Kind::fluid)
-                    P_.v_half[i] = kick<D>(P_.v_half[i], P_.a[i], dt_prev_, dt_);
+                    P_.v_half[i] = kick<D>(P_.v_half[i], P_.a[i], Real(dt_prev_), Real(dt_));
         break;
     case StageKind::drift: {
         if (steps_ + 1 == opts_.debug_fail_step && comm_.rank() == opts_.debug_fail_rank &&
@@ -441,13 +442,14 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                     P_.rho_next[i] = P_.rho[i];
                     continue;
                 }
-                Vec<D> x = drift<D>(P_.x[i], P_.v_half[i], dt_);
+                const Real dt = Real(dt_);
+                Vec<D> x = drift<D>(P_.x[i], P_.v_half[i], dt);
                 if (cfg_.shifting > 0)
                     x += P_.shift[i];
-                Vec<D> v = velocity_estimate<D>(P_.v_half[i], P_.a[i], dt_);
-                const Real rho = continuity_ ? P_.rho[i] + dt_ * P_.drho[i] : P_.rho[i];
+                Vec<D> v = velocity_estimate<D>(P_.v_half[i], P_.a[i], dt);
+                const Real rho = continuity_ ? P_.rho[i] + dt * P_.drho[i] : P_.rho[i];
                 if (!planes_.empty())
-                    reflect(planes_, cfg_.restitution, x, P_.v_half[i], v);
+                    reflect(planes_, Real(cfg_.restitution), x, P_.v_half[i], v);
                 grid_.wrap(x);
                 P_.x_next[i] = x;
                 P_.v_next[i] = v;
@@ -594,8 +596,8 @@ void Simulation<D>::reduce_step_results(const std::string& task_error) {
         Report rep{};
         std::memcpy(&rep, all[r].data(), sizeof(rep));
         global = min(global, TimeStepLimits{rep.acoustic, rep.viscous, rep.force});
-        global_speed = std::max(global_speed, rep.speed);
-        global_disp2 = std::max(global_disp2, rep.disp2);
+        global_speed = std::max(global_speed, Real(rep.speed));
+        global_disp2 = std::max(global_disp2, Real(rep.disp2));
         last_busy_[r] = rep.busy;
         agreed |= rep.requests;
         if (rep.failed != none && failed_rank < 0) {

@@ -16,8 +16,14 @@
 
 namespace sluice {
 
-// Floating-point type of all particle state. Double by default (see docs/ARCHITECTURE.md).
+// Floating-point type of the particle state and of the pair arithmetic: double unless the build
+// sets SLUICE_PRECISION=float (CMakeLists.txt). Simulated time, reductions over all particles
+// (mass, energy, diagnostics) and every file format stay double (docs/ARCHITECTURE.md).
+#ifdef SLUICE_SINGLE_PRECISION
+using Real = float;
+#else
 using Real = double;
+#endif
 
 // Small fixed-size vector of dimension D (2 or 3). Eigen does this well; no hand-rolled type.
 template <int D>

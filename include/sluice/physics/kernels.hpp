@@ -26,9 +26,9 @@ struct QuinticKernel {
         if constexpr (D == 1)
             return 1 / (120 * h_);
         else if constexpr (D == 2)
-            return 7 / (478 * std::numbers::pi * h_ * h_);
+            return 7 / (478 * std::numbers::pi_v<Real> * h_ * h_);
         else
-            return 1 / (120 * std::numbers::pi * h_ * h_ * h_);
+            return 1 / (120 * std::numbers::pi_v<Real> * h_ * h_ * h_);
     }
     [[nodiscard]] Real support() const { return 3 * h; }
     [[nodiscard]] Real W(Real r) const {
@@ -69,9 +69,9 @@ struct WendlandC2Kernel {
         if constexpr (D == 1)
             return 5 / (8 * h_);
         else if constexpr (D == 2)
-            return 7 / (4 * std::numbers::pi * h_ * h_);
+            return 7 / (4 * std::numbers::pi_v<Real> * h_ * h_);
         else
-            return 21 / (16 * std::numbers::pi * h_ * h_ * h_);
+            return 21 / (16 * std::numbers::pi_v<Real> * h_ * h_ * h_);
     }
     [[nodiscard]] Real support() const { return 2 * h; }
     [[nodiscard]] Real W(Real r) const {
@@ -80,7 +80,7 @@ struct WendlandC2Kernel {
             return 0;
         const Real t = 1 - q / 2;
         if constexpr (D == 1)
-            return sigma * t * t * t * (1.5 * q + 1);
+            return sigma * t * t * t * (Real(1.5) * q + 1);
         else
             return sigma * (t * t) * (t * t) * (2 * q + 1);
     }
@@ -117,9 +117,9 @@ struct CubicSplineKernel {
         if constexpr (D == 1)
             return 2 / (3 * h_);
         else if constexpr (D == 2)
-            return 10 / (7 * std::numbers::pi * h_ * h_);
+            return 10 / (7 * std::numbers::pi_v<Real> * h_ * h_);
         else
-            return 1 / (std::numbers::pi * h_ * h_ * h_);
+            return 1 / (std::numbers::pi_v<Real> * h_ * h_ * h_);
     }
     [[nodiscard]] Real support() const { return 2 * h; }
     [[nodiscard]] Real W(Real r) const {
@@ -127,18 +127,18 @@ struct CubicSplineKernel {
         if (q >= 2)
             return 0;
         if (q < 1)
-            return sigma * (1 - 1.5 * q * q + 0.75 * q * q * q);
+            return sigma * (1 - Real(1.5) * q * q + Real(0.75) * q * q * q);
         const Real t = 2 - q;
-        return sigma * 0.25 * t * t * t;
+        return sigma * Real(0.25) * t * t * t;
     }
     [[nodiscard]] Real dW(Real r) const {
         const Real q = r * inv_h;
         if (q >= 2)
             return 0;
         if (q < 1)
-            return sigma * inv_h * (-3 * q + 2.25 * q * q);
+            return sigma * inv_h * (-3 * q + Real(2.25) * q * q);
         const Real t = 2 - q;
-        return sigma * inv_h * (-0.75 * t * t);
+        return sigma * inv_h * (-Real(0.75) * t * t);
     }
     // (dW/dr)/r with q/r = 1/h: s/h^2 (-3 + 2.25 q) for q < 1, s/h^2 (-0.75 (2 - q)^2 / q) for
     // 1 <= q < 2. Both pieces are computed and one is selected, so the factor loop of a
@@ -147,8 +147,8 @@ struct CubicSplineKernel {
     [[nodiscard]] Real dW_over_r(Real r) const {
         const Real q = r * inv_h;
         const Real t = std::max(2 - q, Real(0));
-        const Real inner = -3 + 2.25 * q;
-        const Real outer = -0.75 * t * t / q;
+        const Real inner = -3 + Real(2.25) * q;
+        const Real outer = -Real(0.75) * t * t / q;
         return sigma * inv_h * inv_h * (q < 1 ? inner : outer);
     }
 };

@@ -32,7 +32,7 @@ struct MappedHull {
 
 // Relative tolerance (of `size`) for "on a facet" and "strictly inside": a facet distance
 // below it is round-off of the offsets (x_j - x_i of lattice positions), not geometry.
-inline constexpr Real kMappedHullTolerance = 1e-9;
+inline constexpr Real kMappedHullTolerance = Real(1e-9);
 
 // Hull of the images of `offsets` (none may be zero: the mapping is singular there).
 template <int D>

@@ -39,7 +39,7 @@ inline Real ppe_source(Real rho0, Real dt, Real gamma, Real div_u_star, Real n, 
 // A fluid row whose Laplacian coefficients sum to S <= this fraction of the lattice value is
 // treated as a surface row (P5): with S near zero the scaled row P4 would be singular. A
 // full stencil has S of order 2 D (2 + D) / re^2 (docs/PROJECTION.md).
-inline constexpr Real ppe_min_diagonal_fraction = 1e-3;
+inline constexpr Real ppe_min_diagonal_fraction = Real(1e-3);
 
 // P6: the constant of a wall row from one fluid neighbour, before division by sum_f w_wf.
 template <int D>
@@ -74,7 +74,7 @@ Vec<D> corrected_velocity(const Vec<D>& u_star, const Vec<D>& grad_p, Real rho0,
 // negative and is not applied (P7), so nothing else keeps a splashing particle out of a wall.
 // A fluid particle closer than `distance` to a wall particle and moving towards it loses the
 // approaching component of its velocity (restitution 0). offset: x_wall - x_fluid.
-inline constexpr Real wall_collision_distance_over_dx = 0.8;
+inline constexpr Real wall_collision_distance_over_dx = Real(0.8);
 
 template <int D>
 Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance) {
@@ -94,7 +94,7 @@ Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance) {
 // and dv_j = -dv_i, so the pair's momentum is conserved. Summed over the neighbours of i with
 // the velocities before any collision (a Jacobi update: independent of particle order, hence
 // of threads and ranks). offset: x_j - x_i.
-inline constexpr Real fluid_collision_restitution = 0.2;
+inline constexpr Real fluid_collision_restitution = Real(0.2);
 
 template <int D>
 Vec<D> collision_velocity_change(const Vec<D>& v_i, const Vec<D>& v_j, const Vec<D>& offset,

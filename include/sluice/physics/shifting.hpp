@@ -24,7 +24,7 @@ template <int D, class K>
 SLUICE_FLATTEN void particle_shift(const Neighbourhood<D>& nb, const K& kernel,
                                    const ShiftingParams& prm, CellIndex c, const Particles<D>& P,
                                    std::span<Vec<D>> shift_out) {
-    constexpr Real R = 0.2;
+    constexpr Real R = Real(0.2);
     const AdjacentCells<D> adj = nb.adjacent(c);
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
         if (P.kind[i] != Kind::fluid)

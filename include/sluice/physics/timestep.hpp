@@ -11,21 +11,22 @@
 
 namespace sluice {
 
+// Time steps are double in any build (sluice::Real may be float): simulated time and dt are.
 struct TimeStepLimits {
-    Real acoustic = std::numeric_limits<Real>::infinity();
-    Real viscous = std::numeric_limits<Real>::infinity();
-    Real force = std::numeric_limits<Real>::infinity();
-    [[nodiscard]] Real min() const { return std::min({acoustic, viscous, force}); }
+    double acoustic = std::numeric_limits<double>::infinity();
+    double viscous = std::numeric_limits<double>::infinity();
+    double force = std::numeric_limits<double>::infinity();
+    [[nodiscard]] double min() const { return std::min({acoustic, viscous, force}); }
 };
 
 struct TimeStepParams {
-    Real h = 0, nu = 0; // smoothing length, kinematic viscosity
-    Real cfl = 0.25, viscous_cfl = 0.125, force_cfl = 0.25;
+    double h = 0, nu = 0; // smoothing length, kinematic viscosity
+    double cfl = 0.25, viscous_cfl = 0.125, force_cfl = 0.25;
 };
 
 // Limits for one particle with sound speed c, speed |v| and acceleration |a|.
-inline TimeStepLimits particle_time_step(const TimeStepParams& prm, Real c, Real speed,
-                                         Real accel) {
+inline TimeStepLimits particle_time_step(const TimeStepParams& prm, double c, double speed,
+                                         double accel) {
     TimeStepLimits l;
     l.acoustic = prm.cfl * prm.h / (c + speed);
     if (prm.nu > 0)

@@ -33,7 +33,7 @@ inline constexpr int wmls_unknowns = D + D*(D + 1) / 2;
 // fraction of the largest counts as zero. The scaled matrix of a full, irregular stencil has
 // a ratio of order 1e-1 (perf/wmls/README.md gives the measured minimum); below 1e-3 the
 // fitted second derivatives amplify the Taylor remainder by more than 1000.
-inline constexpr Real wmls_rank_tolerance = 1e-3;
+inline constexpr Real wmls_rank_tolerance = Real(1e-3);
 
 // Scaled weighted design matrix B (N x wmls_unknowns<D>) of the fit, row j:
 //   sqrt(w_j) (s, s_a^2 / 2, s_a s_b (a < b)),  s = (x_j - x_i) / re,
