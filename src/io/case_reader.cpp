@@ -1,77 +1,36 @@
-// TOML case file -> validated CaseConfig. The schema below and docs/CASE_REFERENCE.md describe
-// the same layout; keep them in step.
+// TOML case file -> validated CaseConfig: each section of the case read and checked, in file
+// order. The TOML machinery (typed look-ups, the schema, --set) is in toml_section.hpp,
+// case_schema.hpp and case_toml.hpp.
 #include "sluice/io/case_reader.hpp"
 
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/kernels.hpp"
 
 #include "case_fingerprint.hpp"
+#include "case_toml.hpp"
+#include "toml_section.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <functional>
 #include <limits>
-#include <map>
-#include <optional>
 #include <set>
-#include <sstream>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace sluice {
 namespace {
 
-// Keys each table accepts. Entries of arrays of tables are listed under the array's name
-// without an index ("walls.planes"); "" is the top level.
-const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
-    {"",
-     {"case", "domain", "fluid", "particles", "blocks", "numerics", "walls", "time", "output",
-      "probes", "runtime", "neighbours", "checkpoint", "limits", "projection"}},
-    {"case", {"name", "description", "dimension"}},
-    {"domain", {"lo", "hi", "periodic"}},
-    {"fluid",
-     {"rho0", "viscosity", "sound_speed", "gravity", "eos", "gamma", "background_pressure"}},
-    {"particles", {"dx"}},
-    {"blocks",
-     {"lo", "hi", "shape", "velocity", "profile", "amplitude", "angular_velocity", "strain_rate",
-      "hydrostatic"}},
-    {"numerics",
-     {"scheme", "kernel", "h_over_dx", "density", "delta_sph", "density_diffusion",
-      "artificial_viscosity", "shifting", "cfl", "viscous_cfl", "force_cfl", "dt",
-      "neighbour_skin"}},
-    {"walls",
-     {"model", "tank_lo", "tank_hi", "tank_faces", "restitution", "no_slip", "planes", "boxes"}},
-    {"walls.planes", {"point", "normal"}},
-    {"walls.boxes", {"lo", "hi"}},
-    {"time", {"end_time", "output_interval"}},
-    {"output", {"snapshots", "fields"}},
-    {"probes", {"name", "type", "position", "x", "interval"}},
-    {"neighbours", {"gradient", "laplacian", "free_surface"}},
-    {"neighbours.gradient",
-     {"selection", "candidate_radius_over_dx", "union_with_radius", "hull_points"}},
-    {"neighbours.laplacian",
-     {"selection", "candidate_radius_over_dx", "union_with_radius", "hull_points"}},
-    {"neighbours.free_surface",
-     {"selection", "candidate_radius_over_dx", "union_with_radius", "hull_points"}},
-    {"runtime",
-     {"particles_per_group", "rebalance_threshold", "rebalance_window", "rebalance_every",
-      "balance_cost", "initial_decomposition"}},
-    {"checkpoint", {"every_steps", "every_minutes"}},
-    {"projection",
-     {"solver", "tolerance", "max_iterations", "relaxation", "gamma", "surface_diameter_over_dx",
-      "surface_density_ratio", "correction_gradient", "fluid_collision"}},
-    {"limits", {"max_speed", "min_density", "max_density"}},
-};
-const std::set<std::string, std::less<>> kArrayTables = {"blocks", "probes", "walls.planes",
-                                                         "walls.boxes"};
+using case_file::join_list;
+using case_file::Reader;
+using case_file::Section;
+using case_file::type_name;
 
 const std::vector<std::string> kFieldNames = {"position",     "velocity", "density", "pressure",
                                               "acceleration", "mass",     "id",      "kind"};
@@ -85,517 +44,9 @@ constexpr double kMaxSpeed = 1e5;      // [m/s] initial velocities
 constexpr double kMinDx = 1e-9;        // [m]
 constexpr double kMaxOutputs = 1e7;    // snapshots or probe samples per run
 constexpr std::size_t kMaxNameLength = 200;
-constexpr std::uintmax_t kMaxCaseFileBytes = 1 << 20;
 // Micro-cells of the grid: 32-bit cell indices, and 21 bits per axis of a 3-D Morton key.
 constexpr double kMaxCells = 2e8;
 constexpr double kMaxCellsPerAxis3d = 2097151;
-
-std::string join_key(std::string_view path, std::string_view key) {
-    return path.empty() ? std::string(key) : fmt::format("{}.{}", path, key);
-}
-
-std::string join_list(const std::vector<std::string>& items) {
-    std::string out;
-    for (const auto& s : items)
-        out += (out.empty() ? "" : ", ") + s;
-    return out;
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j)
-        row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diag = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diag = up;
-        }
-    }
-    return row[b.size()];
-}
-
-// "unknown key; did you mean 'x'? allowed: ..." — typos are the usual cause.
-std::string unknown_key_reason(std::string_view key, std::string_view table,
-                               const std::vector<std::string>& allowed) {
-    std::string best;
-    std::size_t best_d = 3; // only suggest close matches
-    for (const auto& a : allowed) {
-        const std::size_t d = edit_distance(key, a);
-        if (d < best_d) {
-            best_d = d;
-            best = a;
-        }
-    }
-    std::string where = table.empty() ? "at the top level" : fmt::format("in [{}]", table);
-    std::string r = fmt::format("unknown key {}", where);
-    if (!best.empty())
-        r += fmt::format("; did you mean '{}'?", best);
-    return r + fmt::format(" (allowed: {})", join_list(allowed));
-}
-
-// Keys and values quoted in messages may hold control characters (TOML escapes allow them):
-// shown as \xNN so a message never rewrites the terminal.
-std::string printable(std::string_view s) {
-    std::string out;
-    for (const char ch : s) {
-        const auto u = static_cast<unsigned char>(ch);
-        if (u < 0x20 || u == 0x7f)
-            out += fmt::format("\\x{:02x}", u);
-        else
-            out += ch;
-    }
-    return out;
-}
-
-std::string type_name(const toml::node& n) {
-    switch (n.type()) {
-    case toml::node_type::table:
-        return "a table";
-    case toml::node_type::array:
-        return "an array";
-    case toml::node_type::string:
-        return "a string";
-    case toml::node_type::integer:
-        return "an integer";
-    case toml::node_type::floating_point:
-        return "a floating-point number";
-    case toml::node_type::boolean:
-        return "a boolean";
-    case toml::node_type::date:
-        return "a date";
-    case toml::node_type::time:
-        return "a time";
-    case toml::node_type::date_time:
-        return "a date-time";
-    default:
-        return "nothing";
-    }
-}
-
-// Raises CaseErrors for one file and remembers which keys came from --set, so a bad value
-// given on the command line is not blamed on a line of the file.
-class Reader {
-public:
-    explicit Reader(std::string file) : file_(std::move(file)) {}
-
-    [[noreturn]] void fail(const std::string& key, const std::string& reason,
-                           const toml::node* at = nullptr) const {
-        std::string r = printable(reason);
-        if (overridden_.count(key) != 0)
-            r += " (value given with --set)";
-        else if (at != nullptr && at->source().begin.line > 0)
-            r += fmt::format(" (line {})", at->source().begin.line);
-        throw CaseError(file_, printable(key), r);
-    }
-
-    void mark_overridden(const std::string& key) { overridden_.insert(key); }
-    [[nodiscard]] const std::string& file() const { return file_; }
-
-    int dim = 2; // known once [case] is read; array lengths depend on it
-
-    // Every key of `t` must be in the schema of table `schema`; `path` is its display path.
-    void check_keys(const toml::table& t, const std::string& path,
-                    const std::string& schema) const {
-        const auto& allowed = kSchema.at(schema);
-        for (const auto& [k, v] : t)
-            if (std::find(allowed.begin(), allowed.end(), k.str()) == allowed.end())
-                fail(join_key(path, k.str()), unknown_key_reason(k.str(), schema, allowed), &v);
-    }
-
-    [[nodiscard]] double as_number(const toml::node& n, const std::string& key) const {
-        double v = 0;
-        if (const auto* i = n.as_integer())
-            v = static_cast<double>(i->get());
-        else if (const auto* f = n.as_floating_point())
-            v = f->get();
-        else
-            fail(key, "expected a number, got " + type_name(n), &n);
-        if (!std::isfinite(v))
-            fail(key, fmt::format("must be a finite number, got {}", v), &n);
-        return v;
-    }
-
-    // An array of exactly `dim` numbers; the unused third component stays 0 in 2-D.
-    [[nodiscard]] Triple as_triple(const toml::node& n, const std::string& key) const {
-        const auto* arr = n.as_array();
-        if (arr == nullptr)
-            fail(key, fmt::format("expected an array of {} numbers, got {}", dim, type_name(n)),
-                 &n);
-        if (arr->size() != static_cast<std::size_t>(dim))
-            fail(key,
-                 fmt::format("expected exactly {} numbers for a {}-D case ({}), got {}", dim, dim,
-                             dim == 2 ? "x, y" : "x, y, z", arr->size()),
-                 &n);
-        Triple out{0, 0, 0};
-        for (std::size_t a = 0; a < arr->size(); ++a)
-            out[a] = as_number((*arr)[a], fmt::format("{}[{}]", key, a));
-        return out;
-    }
-
-private:
-    std::string file_;
-    std::set<std::string, std::less<>> overridden_;
-};
-
-const toml::table& empty_table() {
-    static const toml::table t;
-    return t;
-}
-
-// One table of the file with its display path ("blocks[1]"), for concise typed look-ups.
-// Optional getters return nullopt when the key is absent; type errors throw.
-class Section {
-public:
-    Section(const Reader& r, const toml::table& t, std::string path)
-        : r_(r), t_(t), path_(std::move(path)) {}
-
-    [[nodiscard]] std::string key(std::string_view k) const { return join_key(path_, k); }
-    [[nodiscard]] const toml::node* node(std::string_view k) const { return t_.get(k); }
-    [[nodiscard]] const toml::table& table() const { return t_; }
-    [[nodiscard]] const Reader& reader() const { return r_; }
-
-    [[noreturn]] void fail(std::string_view k, const std::string& reason) const {
-        r_.fail(key(k), reason, node(k));
-    }
-    void require(bool ok, std::string_view k, const std::string& reason) const {
-        if (!ok)
-            fail(k, reason);
-    }
-    // Physical plausibility: values beyond these bounds are typos (or hostile) and would
-    // overflow the arithmetic of a run (e.g. rho0 c0^2, mass = rho0 dx^D).
-    void require_at_most(double v, double bound, std::string_view k, std::string_view unit) const {
-        if (std::abs(v) > bound)
-            fail(k, fmt::format("{} {} is implausibly large (the limit is {:g} {}); check the "
-                                "units",
-                                v, unit, bound, unit));
-    }
-    void require_triple_at_most(const Triple& v, double bound, std::string_view k,
-                                std::string_view unit) const {
-        for (double x : v)
-            require_at_most(x, bound, k, unit);
-    }
-
-    [[nodiscard]] std::optional<double> number(std::string_view k) const {
-        const auto* n = node(k);
-        if (n == nullptr)
-            return std::nullopt;
-        return r_.as_number(*n, key(k));
-    }
-    [[nodiscard]] double number(std::string_view k, double def) const {
-        return number(k).value_or(def);
-    }
-    [[nodiscard]] double required_number(std::string_view k, std::string_view what) const {
-        auto v = number(k);
-        if (!v)
-            missing(k, what);
-        return *v;
-    }
-
-    [[nodiscard]] std::optional<std::int64_t> integer(std::string_view k) const {
-        const auto* n = node(k);
-        if (n == nullptr)
-            return std::nullopt;
-        const auto* i = n->as_integer();
-        if (i == nullptr)
-            fail(k, "expected an integer, got " + type_name(*n));
-        return i->get();
-    }
-
-    [[nodiscard]] std::optional<bool> boolean(std::string_view k) const {
-        const auto* n = node(k);
-        if (n == nullptr)
-            return std::nullopt;
-        const auto* b = n->as_boolean();
-        if (b == nullptr)
-            fail(k, "expected true or false, got " + type_name(*n));
-        return b->get();
-    }
-
-    [[nodiscard]] std::optional<std::string> string(std::string_view k) const {
-        const auto* n = node(k);
-        if (n == nullptr)
-            return std::nullopt;
-        const auto* s = n->as_string();
-        if (s == nullptr)
-            fail(k, "expected a string, got " + type_name(*n));
-        return s->get();
-    }
-
-    [[nodiscard]] std::optional<Triple> triple(std::string_view k) const {
-        const auto* n = node(k);
-        if (n == nullptr)
-            return std::nullopt;
-        return r_.as_triple(*n, key(k));
-    }
-    [[nodiscard]] Triple required_triple(std::string_view k, std::string_view what) const {
-        auto v = triple(k);
-        if (!v)
-            missing(k, what);
-        return *v;
-    }
-
-    [[nodiscard]] std::optional<std::vector<std::string>> strings(std::string_view k) const {
-        const auto* n = node(k);
-        if (n == nullptr)
-            return std::nullopt;
-        const auto* arr = n->as_array();
-        if (arr == nullptr)
-            fail(k, "expected an array of strings, got " + type_name(*n));
-        std::vector<std::string> out;
-        for (std::size_t i = 0; i < arr->size(); ++i) {
-            const auto* s = (*arr)[i].as_string();
-            if (s == nullptr)
-                r_.fail(fmt::format("{}[{}]", key(k), i),
-                        "expected a string, got " + type_name((*arr)[i]), n);
-            out.push_back(s->get());
-        }
-        return out;
-    }
-
-    // A string that must be one of `options`; the message lists them.
-    template <class E>
-    [[nodiscard]] E choice(std::string_view k, E def,
-                           const std::vector<std::pair<std::string, E>>& options) const {
-        std::vector<std::string> names;
-        for (const auto& o : options)
-            names.push_back('"' + o.first + '"');
-        const auto* n = node(k);
-        if (n == nullptr)
-            return def;
-        if (!n->is_string())
-            fail(k, fmt::format("expected a string, got {}; allowed: {}", type_name(*n),
-                                join_list(names)));
-        const std::string s = n->as_string()->get();
-        for (const auto& [name, value] : options)
-            if (s == name)
-                return value;
-        fail(k, fmt::format("unknown value \"{}\"; allowed: {}", s, join_list(names)));
-    }
-
-    // Sub-table; an absent one reads as empty so that defaults and "missing key" apply.
-    [[nodiscard]] Section sub(std::string_view k) const {
-        const auto* n = node(k);
-        if (n == nullptr)
-            return {r_, empty_table(), key(k)};
-        const auto* t = n->as_table();
-        if (t == nullptr)
-            fail(k, fmt::format("expected a table [{}], got {}", key(k), type_name(*n)));
-        r_.check_keys(*t, key(k), schema_of(key(k)));
-        return {r_, *t, key(k)};
-    }
-
-    // Entries of an array of tables ([[k]]), each with its keys checked.
-    [[nodiscard]] std::vector<Section> entries(std::string_view k) const {
-        std::vector<Section> out;
-        const auto* n = node(k);
-        if (n == nullptr)
-            return out;
-        const auto* arr = n->as_array();
-        const std::string schema = schema_of(key(k));
-        if (arr == nullptr)
-            fail(k,
-                 fmt::format("expected an array of tables [[{}]], got {}", key(k), type_name(*n)));
-        for (std::size_t i = 0; i < arr->size(); ++i) {
-            const std::string path = fmt::format("{}[{}]", key(k), i);
-            const auto* t = (*arr)[i].as_table();
-            if (t == nullptr)
-                r_.fail(
-                    path,
-                    fmt::format("expected a table in [[{}]], got {}", key(k), type_name((*arr)[i])),
-                    n);
-            r_.check_keys(*t, path, schema);
-            out.emplace_back(r_, *t, path);
-        }
-        return out;
-    }
-
-private:
-    [[noreturn]] void missing(std::string_view k, std::string_view what) const {
-        r_.fail(key(k), fmt::format("missing required key ({})", what), nullptr);
-    }
-    // "blocks[2]" -> "blocks": indices are not part of the schema.
-    static std::string schema_of(const std::string& path) {
-        std::string out;
-        for (std::size_t i = 0; i < path.size(); ++i) {
-            if (path[i] == '[') {
-                i = path.find(']', i);
-                if (i == std::string::npos)
-                    break;
-                continue;
-            }
-            out += path[i];
-        }
-        return out;
-    }
-
-    const Reader& r_;
-    const toml::table& t_;
-    std::string path_;
-};
-
-// ---------------------------------------------------------------------------------------------
-// Parsing and overrides
-
-toml::table parse_case_text(std::string_view text, const std::string& path) {
-    if (text.size() > kMaxCaseFileBytes)
-        throw CaseError(path, "",
-                        fmt::format("is {} bytes long; a case file is at most {} bytes (a few KiB "
-                                    "is usual)",
-                                    text.size(), kMaxCaseFileBytes));
-    try {
-        return toml::parse(text, std::string_view(path));
-    } catch (const toml::parse_error& e) {
-        throw CaseError(path, "",
-                        fmt::format("TOML syntax error at line {}, column {}: {}",
-                                    e.source().begin.line, e.source().begin.column,
-                                    e.description()));
-    }
-}
-
-toml::table parse_case_file(const std::string& path) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (std::filesystem::is_directory(status))
-        throw CaseError(path, "", "is a directory, not a case file");
-    // A FIFO would block forever and a device (/dev/zero) never ends: only plain files.
-    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-        throw CaseError(path, "", "is not a regular file");
-    if (std::filesystem::exists(status)) {
-        const auto size = std::filesystem::file_size(path, ec);
-        if (!ec && size > kMaxCaseFileBytes)
-            throw CaseError(path, "",
-                            fmt::format("is {} bytes long; a case file is at most {} bytes "
-                                        "(a few KiB is usual)",
-                                        size, kMaxCaseFileBytes));
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw CaseError(path, "",
-                        fmt::format("cannot read the case file ({})", std::strerror(errno)));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad())
-        throw CaseError(path, "", "cannot read the case file (I/O error)");
-    return parse_case_text(text.str(), path);
-}
-
-std::string trim(std::string_view s) {
-    const auto b = s.find_first_not_of(" \t");
-    if (b == std::string_view::npos)
-        return {};
-    const auto e = s.find_last_not_of(" \t");
-    return std::string(s.substr(b, e - b + 1));
-}
-
-// "blocks[0].lo" -> {"blocks", "0", "lo"}.
-std::vector<std::string> split_key(std::string key) {
-    for (auto& ch : key)
-        if (ch == '[' || ch == ']')
-            ch = '.';
-    std::vector<std::string> parts;
-    std::string cur;
-    for (char ch : key) {
-        if (ch == '.') {
-            if (!cur.empty())
-                parts.push_back(cur);
-            cur.clear();
-        } else {
-            cur += ch;
-        }
-    }
-    if (!cur.empty())
-        parts.push_back(cur);
-    return parts;
-}
-
-std::optional<std::size_t> parse_index(const std::string& s) {
-    if (s.empty() || s.size() > 9 || !std::all_of(s.begin(), s.end(), [](char ch) {
-            return std::isdigit(static_cast<unsigned char>(ch)) != 0;
-        }))
-        return std::nullopt;
-    return static_cast<std::size_t>(std::stoul(s));
-}
-
-// Stores `value` (TOML text, or a bare string) at `key` in `root`, after checking the key
-// against the schema. Missing tables on the way are created; array entries must exist.
-void apply_override(toml::table& root, const std::string& text, Reader& r) {
-    const auto eq = text.find('=');
-    if (eq == std::string::npos)
-        r.fail(trim(text), fmt::format("--set \"{}\" must look like key=value", text));
-    const std::string raw_key = trim(std::string_view(text).substr(0, eq));
-    const std::string value = trim(std::string_view(text).substr(eq + 1));
-    const auto parts = split_key(raw_key);
-    if (parts.empty())
-        r.fail(raw_key, fmt::format("--set \"{}\" has no key", text));
-
-    toml::table* cur = &root;
-    std::string schema;  // path without indices
-    std::string display; // path with indices, as messages print it
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        const std::string& part = parts[i];
-        const auto& allowed = kSchema.at(schema);
-        const std::string shown = join_key(display, part);
-        if (std::find(allowed.begin(), allowed.end(), part) == allowed.end())
-            r.fail(shown, unknown_key_reason(part, schema, allowed) + " (given with --set)");
-        const std::string child = join_key(schema, part);
-        const bool last = i + 1 == parts.size();
-
-        if (kSchema.count(child) == 0) { // a value key
-            if (!last)
-                r.fail(join_key(shown, parts[i + 1]),
-                       fmt::format("unknown key: '{}' is a value, not a table (given with --set)",
-                                   shown));
-            // TOML first ("0.1", "[0, 1]", "true", "\"s\""); anything else is a bare string.
-            std::optional<toml::table> parsed;
-            try {
-                const std::string doc = "v = " + value;
-                parsed = toml::parse(std::string_view(doc), std::string_view("--set"));
-            } catch (const toml::parse_error&) {
-            }
-            if (parsed && parsed->size() == 1 && parsed->contains("v"))
-                parsed->get("v")->visit([&](auto&& node) { cur->insert_or_assign(part, node); });
-            else
-                cur->insert_or_assign(part, value);
-            r.mark_overridden(shown);
-            return;
-        }
-
-        if (last)
-            r.fail(shown, "--set must name a single value, not a whole table (e.g. " +
-                              join_key(shown, kSchema.at(child).front()) + "=...)");
-        schema = child;
-        toml::node* n = cur->get(part);
-        if (kArrayTables.count(child) != 0) {
-            const auto idx = parse_index(parts[i + 1]);
-            if (!idx)
-                r.fail(shown, fmt::format("[[{}]] entries are chosen by index, e.g. {}.0.{}", child,
-                                          shown, kSchema.at(child).front()) +
-                                  " (given with --set)");
-            toml::array* arr = n != nullptr ? n->as_array() : nullptr;
-            const std::size_t have = arr != nullptr ? arr->size() : 0;
-            if (*idx >= have || !(*arr)[*idx].is_table())
-                r.fail(
-                    fmt::format("{}[{}]", shown, *idx),
-                    fmt::format("no such entry: the file has {} [[{}]] entr{} (given with --set)",
-                                have, child, have == 1 ? "y" : "ies"));
-            cur = (*arr)[*idx].as_table();
-            display = fmt::format("{}[{}]", shown, *idx);
-            ++i; // the index is consumed
-        } else {
-            if (n == nullptr)
-                n = &cur->insert_or_assign(part, toml::table{}).first->second;
-            if (!n->is_table())
-                r.fail(shown, fmt::format("expected a table [{}], got {}", shown, type_name(*n)),
-                       n);
-            cur = n->as_table();
-            display = shown;
-        }
-    }
-    r.fail(raw_key, "--set must name a value, not a whole table");
-}
 
 // ---------------------------------------------------------------------------------------------
 // Sections of the case, in file order
@@ -1339,9 +790,9 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
 
 CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides) {
     Reader r(path);
-    toml::table root = parse_case_file(path);
+    toml::table root = case_file::parse_case_file(path);
     for (const auto& o : overrides)
-        apply_override(root, o, r);
+        case_file::apply_override(root, o, r);
     CaseConfig c = build(root, r, path);
     c.fingerprint = case_fingerprint(root);
     return c;
@@ -1350,9 +801,9 @@ CaseConfig read_case(const std::string& path, const std::vector<std::string>& ov
 CaseConfig read_case_text(std::string_view text, const std::string& name,
                           const std::vector<std::string>& overrides) {
     Reader r(name);
-    toml::table root = parse_case_text(text, name);
+    toml::table root = case_file::parse_case_text(text, name);
     for (const auto& o : overrides)
-        apply_override(root, o, r);
+        case_file::apply_override(root, o, r);
     return build(root, r, name);
 }
 

@@ -102,7 +102,7 @@ WmlsStencil<D> wmls_stencil(std::span<const Vec<D>> offsets, Real re, LsWeight w
         C.applyOnTheLeft(qr.householderQ());
         out.ok = true;
     } else {
-        // Degenerate stencil (too few neighbours, collinear/coplanar, one-sided). Truncated SVD
+        // Degenerate stencil (too few neighbours, collinear/coplanar or coincident). Truncated SVD
         // of the second-order fit; a target not determined by it (not in the row space) is
         // taken from the first-order fit (gradient) or set to 0 (Laplacian).
         Eigen::JacobiSVD<MatX> svd(B, Eigen::ComputeThinU | Eigen::ComputeThinV);

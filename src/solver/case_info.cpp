@@ -1,0 +1,123 @@
+// describe_case: what `sluice info` prints, derived from the configuration alone (no particles
+// are made, no step is run). Apart from the solver's run loop (run.cpp), so that the case
+// checks and the case-reader fuzzer need none of the solver.
+#include "sluice/solver/run.hpp"
+
+#include "sluice/core/particles.hpp"
+#include "sluice/physics/initial_conditions.hpp"
+#include "sluice/physics/kernels.hpp"
+#include "sluice/physics/timestep.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+namespace sluice {
+namespace {
+
+const char* kernel_name(KernelType k) {
+    switch (k) {
+    case KernelType::quintic:
+        return "Morris quintic spline (support 3h)";
+    case KernelType::wendland_c2:
+        return "Wendland C2 (support 2h)";
+    case KernelType::cubic_spline:
+        return "cubic spline (support 2h)";
+    }
+    return "?";
+}
+
+// Bytes of particle state per particle (the arrays of Particles<D>).
+std::size_t bytes_per_particle(int dim) {
+    const std::size_t vec = static_cast<std::size_t>(dim) * sizeof(Real);
+    return 8 * vec + 5 * sizeof(Real) + sizeof(ParticleId) + sizeof(Kind);
+}
+
+} // namespace
+
+CaseInfo describe_case(const CaseConfig& cfg) {
+    CaseInfo info;
+    info.h = cfg.h_over_dx * cfg.dx;
+    info.support = kernel_support_factor(cfg.kernel) * info.h;
+    const int layers = wall_layers(info.support, cfg.dx);
+    info.fluid_particles = count_fluid_particles(cfg);
+    info.wall_particles = count_wall_particles(cfg, layers);
+    info.memory_bytes = static_cast<double>((info.fluid_particles + info.wall_particles) *
+                                            bytes_per_particle(cfg.dimension));
+    double g = 0, vmax = 0;
+    for (int d = 0; d < cfg.dimension; ++d)
+        g += cfg.gravity[d] * cfg.gravity[d];
+    for (const auto& b : cfg.blocks)
+        vmax = std::max(vmax, block_max_speed(b, cfg.dimension));
+    const TimeStepParams prm{info.h, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl,
+                             cfg.force_cfl};
+    // The projection scheme has no acoustic limit (docs/PROJECTION.md).
+    const double c = cfg.scheme == Scheme::projection ? 0.0 : cfg.sound_speed;
+    const TimeStepLimits l = particle_time_step(prm, c, vmax, std::sqrt(g));
+    info.dt_acoustic = l.acoustic;
+    info.dt_viscous = l.viscous;
+    info.dt_force = l.force;
+    info.dt_stable = l.min();
+    info.dt_estimate = cfg.fixed_dt ? *cfg.fixed_dt : l.min();
+    info.cells = 1;
+    for (int d = 0; d < cfg.dimension; ++d) {
+        const double wall = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
+        const double extent = cfg.periodic[d]
+                                  ? cfg.domain_hi[d] - cfg.domain_lo[d]
+                                  : std::max(cfg.domain_hi[d], cfg.tank_hi[d] + wall) -
+                                        std::min(cfg.domain_lo[d], cfg.tank_lo[d] - wall) +
+                                        2 * info.support;
+        info.cells *= static_cast<std::size_t>(std::max(1.0, std::floor(extent / info.support)));
+    }
+
+    auto& ph = info.physics;
+    ph.push_back(fmt::format("kernel: {}, h = {:.4g} m ({} dx)", kernel_name(cfg.kernel), info.h,
+                             cfg.h_over_dx));
+    if (cfg.scheme == Scheme::projection)
+        ph.push_back(fmt::format(
+            "scheme: incompressible projection (WMLS operators, PPE by {}, tolerance {:g}, "
+            "gamma {:g})",
+            cfg.projection.solver == PressureSolver::sor
+                ? fmt::format("SOR, relaxation {:g}", cfg.projection.relaxation)
+                : std::string("BiCGSTAB + Jacobi"),
+            cfg.projection.tolerance, cfg.projection.gamma));
+    else if (cfg.density == DensityScheme::summation)
+        ph.push_back("density: summation");
+    else
+        ph.push_back(cfg.delta_sph > 0 ? fmt::format("density: continuity + delta-SPH (delta = {})",
+                                                     cfg.delta_sph)
+                                       : std::string("density: continuity"));
+    if (cfg.scheme == Scheme::wcsph)
+        ph.push_back(
+            cfg.eos == EosType::linear
+                ? fmt::format("EOS: linear, c0 = {} m/s", cfg.sound_speed)
+                : fmt::format("EOS: Tait (gamma = {}), c0 = {} m/s", cfg.gamma, cfg.sound_speed));
+    if (cfg.background_pressure != 0)
+        ph.push_back(fmt::format("background pressure: {} Pa", cfg.background_pressure));
+    if (cfg.viscosity > 0)
+        ph.push_back(fmt::format("laminar viscosity (Morris): mu = {} Pa s", cfg.viscosity));
+    if (cfg.artificial_viscosity > 0)
+        ph.push_back(
+            fmt::format("artificial viscosity (Monaghan): alpha = {}", cfg.artificial_viscosity));
+    if (g > 0)
+        ph.push_back(fmt::format("body force: |g| = {:.4g} m/s^2", std::sqrt(g)));
+    if (cfg.walls == WallModel::dummy)
+        ph.push_back(fmt::format("walls: dummy particles (Adami 2012), {} layers, {}", layers,
+                                 cfg.no_slip ? "no-slip" : "free-slip"));
+    else if (cfg.walls == WallModel::reflective)
+        ph.push_back(fmt::format("walls: reflective planes, restitution {}", cfg.restitution));
+    std::string periodic;
+    for (int d = 0; d < cfg.dimension; ++d)
+        if (cfg.periodic[d])
+            periodic += "xyz"[d];
+    if (!periodic.empty())
+        ph.push_back("periodic along: " + periodic);
+    ph.push_back(cfg.fixed_dt ? fmt::format("time step: fixed {:.4g} s", *cfg.fixed_dt)
+                              : std::string("time step: adaptive (CFL, viscous, force limits)"));
+    return info;
+}
+
+} // namespace sluice
