@@ -135,13 +135,15 @@ def describe(run: sr.Run, threads: int) -> dict:
         "peak_rss_bytes": run.peak_rss_bytes,
         "rss_per_particle": run.peak_rss_bytes / n_all,
         "git": s.get("git_revision", "?"),
+        "precision": s.get("precision", "double"),
     }
 
 
 def print_config(name: str, label: str, d: dict) -> None:
     print(f"\n-- configuration {name}: {label}")
     print(f"   particles {d['fluid']:,} fluid + {d['walls']:,} wall = {d['particles']:,}; "
-          f"{d['steps']} steps to t = {d['simulated_s']:.4g} s; {d['threads']} thread(s)")
+          f"{d['steps']} steps to t = {d['simulated_s']:.4g} s; {d['threads']} thread(s); "
+          f"{d['precision']} precision")
     print(f"   wall time (time loop) {d['wall_s']:.2f} s  (process {d['process_wall_s']:.2f} s, "
           f"CPU {d['cpu_s']:.2f} s); {1e3 * d['time_per_step_s']:.2f} ms/step")
     print(f"   particle-steps/s   {d['psteps_per_s'] / 1e6:.3f} M with walls, "
@@ -169,7 +171,7 @@ THROUGHPUT_COLUMNS = [
     "time_per_step_s", "density_busy_s", "walls_busy_s", "accel_busy_s", "kick_busy_s",
     "drift_busy_s", "rebin_s", "density_pairs_per_busy_s", "walls_pairs_per_busy_s",
     "accel_pairs_per_busy_s", "drift_pairs_per_busy_s", "neighbours_per_fluid",
-    "peak_rss_bytes", "rss_per_particle", "git"]
+    "peak_rss_bytes", "rss_per_particle", "git", "precision"]
 
 
 def throughput_row(name: str, case: Path, d: dict) -> dict:
