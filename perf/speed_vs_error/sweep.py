@@ -3,6 +3,7 @@
 
     perf/speed_vs_error/run.sh [--quick] [--cases dam_break,hydrostatic,taylor_green,poiseuille]
                                [--threads 1] [--out DIR] [--nice N] [--label TEXT]
+                               [--sluice-float build/release-float/sluice]
 
 Every run is a real `sluice run` of the case file under cases/ with --set overrides; its
 error comes from its own output files (evaluate.py, same definitions as tests/validation/),
@@ -115,7 +116,10 @@ def pareto(points: list[tuple[float, float]]) -> list[int]:
 
 COLUMNS = ["case", "variant", "dx", "particles", "fluid_particles", "steps", "simulated_s",
            "threads", "wall_s", "core_s", "cpu_s", "peak_rss_bytes", "error", "error_measure",
-           "pareto", "status", "overrides", "git", "mode"]
+           "pareto", "status", "overrides", "precision", "git", "mode"]
+
+# The variant run with --sluice-float's binary (the baseline's settings in single precision).
+SINGLE = "single precision"
 
 
 def plot(case: str, rows: list[dict], png: Path, subtitle: str) -> None:
@@ -171,6 +175,9 @@ def main() -> int:
     ap.add_argument("--runs", type=Path, default=sr.ROOT / "results" / "speed_vs_error",
                     help="folder for the runs' own output (default results/speed_vs_error)")
     ap.add_argument("--sluice", type=Path, default=sr.DEFAULT_SLUICE)
+    ap.add_argument("--sluice-float", type=Path, default=None,
+                    help="a single-precision build (preset release-float): adds the variant "
+                         "'single precision' (the baseline run with this binary)")
     ap.add_argument("--nice", type=int, default=0, help="run sluice under nice -n N")
     ap.add_argument("--label", default="",
                     help="note for the plots' subtitle, e.g. 'machine under load'")
@@ -181,6 +188,10 @@ def main() -> int:
         if c not in CASES:
             sr.die(f"speed_vs_error: unknown case '{c}' (known: {', '.join(CASES)})")
     sluice = sr.ensure_binary(args.sluice)
+    sluice_float = args.sluice_float
+    if sluice_float and not sluice_float.exists():
+        sr.die(f"speed_vs_error: {sluice_float} missing (cmake --preset release-float && "
+               "cmake --build --preset release-float -j2)")
     args.out.mkdir(parents=True, exist_ok=True)
     suffix = "_quick" if args.quick else ""
     git = sr.git_revision()
@@ -198,14 +209,17 @@ def main() -> int:
         print(f"\n-- {name} ({spec['file']}): {measure}"
               + ("" if proj else "; projection scheme not offered by this build, skipped"))
         rows = []
-        for label, var in variants(base, args.quick, proj):
+        runs = [(label, var, sluice) for label, var in variants(base, args.quick, proj)]
+        if sluice_float:
+            runs.append((SINGLE, {}, sluice_float))
+        for label, var, binary in runs:
             for dx in spec["dx"][mode]:
                 overrides = dict(spec["fixed"])
                 overrides["time.end_time"] = spec["end"][mode]
                 overrides.update(resolution_overrides(name, base, dx))
                 overrides.update(var)
                 tag = f"{name}_{label.replace(' ', '_').replace(',', '')}_dx{dx:g}"
-                run = sr.run_sluice(sluice, case_file, args.runs / tag, args.threads, overrides,
+                run = sr.run_sluice(binary, case_file, args.runs / tag, args.threads, overrides,
                                     nice=args.nice, echo=False)
                 row = {"case": name, "variant": label, "dx": dx, "threads": args.threads,
                        "error_measure": measure, "git": git, "mode": mode,
@@ -213,7 +227,7 @@ def main() -> int:
                        "cpu_s": run.cpu_s, "peak_rss_bytes": run.peak_rss_bytes, "pareto": False}
                 if run.ok:
                     s = run.summary
-                    row.update(particles=s["particles"], fluid_particles=s["fluid_particles"],
+                    row.update(precision=s.get("precision", "double"), particles=s["particles"], fluid_particles=s["fluid_particles"],
                                steps=s["steps"], simulated_s=s["simulated_time"],
                                wall_s=s["wall_seconds"], core_s=args.threads * s["wall_seconds"])
                     try:
