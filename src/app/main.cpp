@@ -21,7 +21,6 @@
 #include <exception>
 #include <optional>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace {
@@ -41,7 +40,7 @@ bool launched_by_mpi() {
 std::string version_string() {
     const std::string rev = sluice::git_revision;
     return fmt::format("sluice {} ({}{})", sluice::version, rev.empty() ? "unknown revision" : rev,
-                       std::is_same_v<sluice::Real, float> ? ", single precision" : "");
+                       sluice::single_precision ? ", single precision" : "");
 }
 
 std::string human_bytes(double bytes) {

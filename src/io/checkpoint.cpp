@@ -18,7 +18,6 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
-#include <type_traits>
 
 namespace sluice {
 namespace fs = std::filesystem;
@@ -73,7 +72,7 @@ void write_column(hid_t file, const char* name, const std::vector<T>& data, std:
 // Particle columns are stored as 64-bit floats whatever sluice::Real is; HDF5 converts from and
 // to the in-memory type (exact both ways for a float build).
 hid_t native_real() {
-    return std::is_same_v<Real, float> ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE;
+    return single_precision ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE;
 }
 
 template <int D>

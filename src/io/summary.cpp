@@ -8,7 +8,6 @@
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
-#include <type_traits>
 
 namespace sluice {
 
@@ -30,7 +29,7 @@ nlohmann::json make_summary(const CaseConfig& cfg, const RunResult& r, int threa
     j["ranks"] = ranks;
     j["version"] = sluice::version;
     j["git_revision"] = sluice::git_revision;
-    j["precision"] = std::is_same_v<Real, float> ? "float" : "double"; // SLUICE_PRECISION
+    j["precision"] = single_precision ? "float" : "double"; // SLUICE_PRECISION
     j["mass_initial"] = r.mass_initial;
     j["mass_final"] = r.mass_final;
     // Relative mass drift: zero for a conservative scheme, the first thing to look at.

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
 
 namespace sluice {
 namespace {
@@ -34,7 +33,7 @@ void check_runnable(const CaseConfig& cfg, const CaseInfo& info) {
     // The projection scheme's geometry (convex hulls, WMLS rank tests, the BiCGSTAB solve to
     // 1e-8) works with tolerances below single precision's resolution; it is validated in
     // double only (docs/ARCHITECTURE.md, "Dimension and precision").
-    if (std::is_same_v<Real, float> && cfg.scheme == Scheme::projection)
+    if (single_precision && cfg.scheme == Scheme::projection)
         throw CaseError(cfg.source_file, "numerics.scheme",
                         "the projection scheme needs a double-precision build of sluice (this "
                         "one was built with SLUICE_PRECISION=float)");

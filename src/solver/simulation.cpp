@@ -429,6 +429,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                                                  "(--debug-fail-rank/--debug-fail-step)",
                                                  comm_.rank(), steps_ + 1));
         TimeStepLimits lim;
+        const Real dt = Real(dt_);
         Real speed = 0, disp2 = 0;
         std::string failure;
         for (CellIndex c : cells) {
@@ -442,7 +443,6 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
                     P_.rho_next[i] = P_.rho[i];
                     continue;
                 }
-                const Real dt = Real(dt_);
                 Vec<D> x = drift<D>(P_.x[i], P_.v_half[i], dt);
                 if (cfg_.shifting > 0)
                     x += P_.shift[i];

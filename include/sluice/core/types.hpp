@@ -2,6 +2,7 @@
 // Scalar and small-vector types shared by every layer.
 #include <Eigen/Core>
 #include <cstdint>
+#include <type_traits>
 
 // On a per-cell neighbour loop: inline every call inside it (the per-pair lambda included).
 // Without it GCC 12 keeps the pair lambda an out-of-line call, since the neighbour walks invoke
@@ -24,6 +25,9 @@ using Real = float;
 #else
 using Real = double;
 #endif
+// Whether this build is the single-precision one: what summary.json, --version, checkpoints and
+// the case checks ask of it.
+inline constexpr bool single_precision = std::is_same_v<Real, float>;
 
 // Small fixed-size vector of dimension D (2 or 3). Eigen does this well; no hand-rolled type.
 template <int D>
