@@ -196,33 +196,15 @@ double Section::required_number(std::string_view k, std::string_view what) const
 }
 
 std::optional<std::int64_t> Section::integer(std::string_view k) const {
-    const auto* n = node(k);
-    if (n == nullptr)
-        return std::nullopt;
-    const auto* i = n->as_integer();
-    if (i == nullptr)
-        fail(k, "expected an integer, got " + type_name(*n));
-    return i->get();
+    return typed<std::int64_t>(k, "expected an integer");
 }
 
 std::optional<bool> Section::boolean(std::string_view k) const {
-    const auto* n = node(k);
-    if (n == nullptr)
-        return std::nullopt;
-    const auto* b = n->as_boolean();
-    if (b == nullptr)
-        fail(k, "expected true or false, got " + type_name(*n));
-    return b->get();
+    return typed<bool>(k, "expected true or false");
 }
 
 std::optional<std::string> Section::string(std::string_view k) const {
-    const auto* n = node(k);
-    if (n == nullptr)
-        return std::nullopt;
-    const auto* s = n->as_string();
-    if (s == nullptr)
-        fail(k, "expected a string, got " + type_name(*n));
-    return s->get();
+    return typed<std::string>(k, "expected a string");
 }
 
 std::optional<Triple> Section::triple(std::string_view k) const {

@@ -121,6 +121,18 @@ public:
 private:
     [[noreturn]] void missing(std::string_view k, std::string_view what) const;
 
+    // The value of k if it holds a T (a toml++ value type); `expected` opens the type error.
+    template <class T>
+    [[nodiscard]] std::optional<T> typed(std::string_view k, std::string_view expected) const {
+        const auto* n = node(k);
+        if (n == nullptr)
+            return std::nullopt;
+        const auto* v = n->as<T>();
+        if (v == nullptr)
+            fail(k, std::string(expected) + ", got " + type_name(*n));
+        return v->get();
+    }
+
     const Reader& r_;
     const toml::table& t_;
     std::string path_;
