@@ -7,8 +7,13 @@ snapshots/*.h5), with the same definitions as the validation tests in tests/vali
                 linearly in T and starting at (T, Z) = (0, 1).
 * hydrostatic   test_hydrostatic_2d.cpp: worst relative deviation of the bottom-centre pressure
                 probe from rho0 g (H - y_probe) over the samples with t >= 1 s.
-* taylor-green  test_taylor_green_2d.cpp: relative error of KE(t)/KE(0) against
-                exp(-16 pi^2 nu t / L^2) at the final time.
+* taylor-green  relative error of the decay rate of the kinetic energy, against the exact
+                16 pi^2 nu / L^2 of KE(t)/KE(0) = exp(-16 pi^2 nu t / L^2): the rate is the
+                least-squares slope of -ln(KE/KE0) against t through the origin, over every
+                snapshot. Not the error at one instant (test_taylor_green_2d.cpp): at the
+                sweep's resolutions KE carries an acoustic oscillation of up to 16 % of KE0
+                between snapshots 0.02 s apart, so an error at one time ranks runs by the
+                oscillation's phase, not by the decay.
 * poiseuille    test_poiseuille_2d.cpp:  L2 relative error of the fluid x-velocity against the
                 Morris et al. (1997, eq. 21) start-up series at the final time.
 """
@@ -93,13 +98,18 @@ def taylor_green_decay(out_dir: Path, case: dict) -> float:
             m = np.asarray(f["mass"]).reshape(-1)
             return float(0.5 * np.sum(m * np.sum(v * v, axis=1))), float(f.attrs["time"])
 
-    ke0, t0 = ke(snaps[0])
-    ke1, t1 = ke(snaps[-1])
+    samples = [ke(p) for p in snaps]
+    ke0, t0 = samples[0]
     assert t0 == 0.0, "the first snapshot must be the initial state"
+    if len(samples) < 3:
+        raise ValueError("the decay fit needs snapshots during the run (time.output_interval)")
     nu = case["fluid"]["viscosity"] / case["fluid"]["rho0"]
     L = case["domain"]["hi"][0] - case["domain"]["lo"][0]
-    exact = math.exp(-16 * math.pi**2 * nu * t1 / L**2)
-    return abs(ke1 / ke0 - exact) / exact
+    exact = 16 * math.pi**2 * nu / L**2
+    t = np.array([s[1] for s in samples[1:]])
+    y = -np.log(np.array([s[0] for s in samples[1:]]) / ke0)
+    rate = float(np.dot(t, y) / np.dot(t, t))
+    return abs(rate - exact) / exact
 
 
 def poiseuille_series(y, t: float, F: float, nu: float, L: float):
@@ -133,6 +143,6 @@ def poiseuille_profile(out_dir: Path, case: dict) -> float:
 EVALUATORS = {
     "dam_break": (dam_break_front, "RMS relative front deviation from Martin & Moyce (T <= 3)"),
     "hydrostatic": (hydrostatic_pressure, "worst relative bottom-pressure error (t >= 1 s)"),
-    "taylor_green": (taylor_green_decay, "relative error of KE/KE0 at the end time"),
+    "taylor_green": (taylor_green_decay, "relative error of the fitted KE decay rate"),
     "poiseuille": (poiseuille_profile, "L2 relative velocity-profile error at the end time"),
 }
