@@ -8,6 +8,10 @@ struct PressureSolveRecord {
     int iterations = 0;  // BiCGSTAB iterations (two operator products each) or SOR sweeps
     double residual = 0; // final |bhat - A p| / |bhat| of the row-scaled system (recomputed)
     double seconds = 0;  // wall time of the solve on this rank
+    // Without a free surface: the uniform correction lambda of the scaled source of every
+    // fluid row that made the singular system compatible (docs/PROJECTION.md, "No free
+    // surface"), in Pa; 0 when a free surface fixes the pressure level.
+    double source_shift = 0;
 };
 
 struct PressureSolveTotals {
