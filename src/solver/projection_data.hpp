@@ -96,11 +96,12 @@ private:
 
 // What a solver graph run does (set by the main thread before each run).
 enum class SolverPhase {
-    residual,  // y = x; r = bhat - A y, rhat = r; partials (r,r), (bhat,bhat)
+    residual,  // y = x; r = bhat - A y, rhat = r; partials (r,r), (bhat,bhat), and over the
+               // fluid rows sum y, their number, the number of fluid particles on surface rows
     bicg_dir,  // [x += omega s; r = s - omega t; partial (r,r)]; p = r + beta (p - omega v);
-               // y = p; v = A y; partial (rhat, v)
+               // y = p; v = A y; partial (rhat, v) [, sum of y over the fluid rows]
     bicg_half, // s = r - alpha v; x += alpha p; y = s; t = A y;
-               // partials (t,s), (t,t), (rhat,s), (rhat,t), (s,s)
+               // partials (t,s), (t,t), (rhat,s), (rhat,t), (s,s) [, sum of y, fluid rows]
     sor_sweep, // y = x; Gauss-Seidel/SOR sweep inside the group, y across groups; partial r^2
     set_zero   // x = 0 (the right-hand side vanishes)
 };
@@ -121,6 +122,21 @@ struct ProjectionData {
     SolverPhase phase = SolverPhase::residual;
     bool first_direction = true;
     double alpha = 0, beta = 0, omega = 0;
+
+    // No free surface (docs/PROJECTION.md, "No free surface"): no fluid row is a Dirichlet
+    // row, so A 1 = 0 and the scaled system is singular. It is then solved bordered,
+    //   [A  e] [p     ]   [bhat ]
+    //   [m  0] [lambda] = [gauge],
+    // e = 1 on fluid rows, m p = the mean of p over the fluid rows, gauge = the background
+    // pressure: lambda is the uniform correction of the fluid rows' source that makes the
+    // system compatible. Each Krylov vector has one component along lambda, the same number
+    // on every rank, kept here by the main thread.
+    bool free_level = false;
+    double gauge = 0;
+    double fluid_rows = 0; // the number of fluid rows (all ranks)
+    struct Extra {
+        double x = 0, r = 0, rhat = 0, dir = 0, v = 0, s = 0, t = 0, y = 0;
+    } extra;
     bool failed = false; // a task of this step threw: later stages do nothing
 
     Real re = 0;          // WMLS influence radius (the kernel support)

@@ -310,6 +310,9 @@ void Simulation<D>::solver_stage(int stage, int group) {
         return;
     const bool sor = d.phase == SolverPhase::sor_sweep;
     const Real omega = Real(cfg_.projection.relaxation);
+    // The bordered system's column e (lambda on the fluid rows) and row m (their sum).
+    const auto lambda = Real(d.extra.y);
+    const std::size_t sum_slot = d.phase == SolverPhase::bicg_half ? 5 : 2;
     for (std::uint32_t i = lo; i < hi; ++i) {
         const std::uint32_t k = i - lo;
         Real sum = 0;
@@ -328,13 +331,23 @@ void Simulation<D>::solver_stage(int stage, int group) {
         }
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             sum += G.a[p] * d.y[list.j[p]];
-        const Real ay = d.y[i] - sum;
+        Real ay = d.y[i] - sum;
+        const bool fluid_row = d.row[i] == PpeRow::fluid;
+        if (fluid_row && d.free_level)
+            ay += lambda;
+        if (fluid_row && (d.free_level || d.phase == SolverPhase::residual))
+            q[sum_slot] += d.y[i];
         switch (d.phase) {
         case SolverPhase::residual:
             d.r[i] = d.bhat[i] - ay;
             d.rhat[i] = d.r[i];
             q[0] += d.r[i] * d.r[i];
             q[1] += d.bhat[i] * d.bhat[i];
+            // What decides whether the level is free, counted on every solve.
+            if (fluid_row)
+                q[3] += 1;
+            else if (P_.kind[i] == Kind::fluid)
+                q[4] += 1;
             break;
         case SolverPhase::bicg_dir:
             d.v[i] = ay;
@@ -403,16 +416,44 @@ std::string Simulation<D>::solve_pressure(std::string& error) {
         return g;
     };
     PressureSolveRecord rec;
-    auto g = run(SolverPhase::residual, 2);
+    // The bordered system's extra component (ProjectionData::free_level): e.x = lambda.
+    auto& e = d.extra;
+    e = {};
+    d.free_level = false;
+    auto g = run(SolverPhase::residual, 5);
+    // No fluid particle on a Dirichlet row: the level is free; the counts are exact sums.
+    if (!failed && g[4] == 0 && g[3] > 0) {
+        d.free_level = true;
+        d.gauge = cfg_.background_pressure;
+        d.fluid_rows = g[3];
+    }
+    // The residual's and the right-hand side's components along lambda (e.x = 0 here).
+    const auto border_residual = [&](std::array<double, 7>& sums) {
+        if (!d.free_level)
+            return;
+        e.r = d.gauge - sums[2] / d.fluid_rows;
+        e.rhat = e.r;
+        sums[0] += e.r * e.r;
+        sums[1] += d.gauge * d.gauge;
+    };
+    border_residual(g);
     const double bnorm = std::sqrt(g[1]);
-    const double tol = ps.tolerance * bnorm;
     double rnorm = std::sqrt(g[0]);
+    // Without a free surface the source can vanish to rounding (a divergence-free field on a
+    // lattice) while the starting iterate is far from the solution: the residual is then
+    // measured against the larger of |bhat| and the initial residual.
+    const double scale = d.free_level ? std::max(bnorm, rnorm) : bnorm;
+    const double tol = ps.tolerance * scale;
     bool converged = rnorm <= tol;
     std::string breakdown;
     if (!failed && bnorm == 0) {
         run(SolverPhase::set_zero, 0);
         converged = true;
     }
+    if (!failed && !converged && d.free_level && ps.solver == PressureSolver::sor)
+        return "the pressure Poisson system has no free-surface row (a periodic or closed "
+               "flow): its pressure level is free, which projection.solver = \"sor\" does not "
+               "handle; use projection.solver = \"bicgstab\"";
     int it = 0;
     if (!failed && !converged && ps.solver == PressureSolver::bicgstab) {
         // BiCGSTAB (van der Vorst 1992) on the row-scaled system, i.e. with the Jacobi
@@ -422,9 +463,25 @@ std::string Simulation<D>::solve_pressure(std::string& error) {
         double rho = g[0];
         d.first_direction = true;
         while (true) {
-            g = run(SolverPhase::bicg_dir, 2);
+            if (d.free_level) { // the vector updates of bicg_dir's prepare stage, for lambda
+                if (!d.first_direction) {
+                    e.x += d.omega * e.s;
+                    e.r = e.s - d.omega * e.t;
+                    e.dir = e.r + d.beta * (e.dir - d.omega * e.v);
+                } else {
+                    e.dir = e.r;
+                }
+                e.y = e.dir;
+            }
+            g = run(SolverPhase::bicg_dir, d.free_level ? 3 : 2);
             if (failed)
                 break;
+            if (d.free_level) {
+                e.v = g[2] / d.fluid_rows;
+                g[1] += e.rhat * e.v;
+                if (!d.first_direction)
+                    g[0] += e.r * e.r;
+            }
             if (!d.first_direction) {
                 rnorm = std::sqrt(g[0]);
                 if (rnorm <= tol) {
@@ -440,9 +497,22 @@ std::string Simulation<D>::solve_pressure(std::string& error) {
                 break;
             }
             d.alpha = rho / g[1];
-            g = run(SolverPhase::bicg_half, 5);
+            if (d.free_level) {
+                e.s = e.r - d.alpha * e.v;
+                e.x += d.alpha * e.dir;
+                e.y = e.s;
+            }
+            g = run(SolverPhase::bicg_half, d.free_level ? 6 : 5);
             if (failed)
                 break;
+            if (d.free_level) {
+                e.t = g[5] / d.fluid_rows;
+                g[0] += e.t * e.s;
+                g[1] += e.t * e.t;
+                g[2] += e.rhat * e.s;
+                g[3] += e.rhat * e.t;
+                g[4] += e.s * e.s;
+            }
             ++it;
             const double snorm = std::sqrt(std::max(0.0, g[4]));
             if (snorm <= tol) { // x already holds x + alpha p
@@ -481,8 +551,12 @@ std::string Simulation<D>::solve_pressure(std::string& error) {
     }
     if (!failed) {
         // The reported residual is recomputed from the final iterate, not the recursion's.
-        g = run(SolverPhase::residual, 2);
-        rec.residual = bnorm > 0 ? std::sqrt(g[0]) / bnorm : std::sqrt(g[0]);
+        e.y = e.x;
+        g = run(SolverPhase::residual, 5);
+        border_residual(g);
+        rec.source_shift = e.x;
+        rec.residual = scale > 0 ? std::sqrt(g[0]) / scale : std::sqrt(g[0]);
+        rec.free_level = d.free_level;
     }
     rec.iterations = it;
     rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -518,6 +592,8 @@ void Simulation<D>::correct_stage(int group) {
     Real speed = 0;
     std::string failure;
     const Real g_norm = momentum_.gravity.norm();
+    const physics::PressureLevel level =
+        d.free_level ? physics::PressureLevel::free : physics::PressureLevel::surface;
     for (std::uint32_t i = lo; i < hi; ++i) {
         if (P_.kind[i] != Kind::fluid || d.failed) {
             P_.x_next[i] = P_.x[i];
@@ -529,12 +605,13 @@ void Simulation<D>::correct_stage(int group) {
         // P7 with the stabilised gradient (docs/PROJECTION.md, "Stabilised gradient"): the
         // reference is the smallest positive pressure around i (surface particles, at 0, are
         // not a reference for their interior neighbours).
-        Real p_ref = physics::gradient_pressure(P_.p[i]);
+        Real p_ref = physics::gradient_pressure(P_.p[i], level);
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            p_ref = physics::gradient_reference(p_ref, P_.p[list.j[p]]);
+            p_ref = physics::gradient_reference(p_ref, P_.p[list.j[p]], level);
         Vec<D> grad = Vec<D>::Zero();
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            grad += grad_coefficient[p] * (physics::gradient_pressure(P_.p[list.j[p]]) - p_ref);
+            grad +=
+                grad_coefficient[p] * (physics::gradient_pressure(P_.p[list.j[p]], level) - p_ref);
         Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, Real(cfg_.rho0), Real(dt_));
         const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)

@@ -369,8 +369,12 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             throw InternalError(std::string(e.what()) + where);
         }
         if (const PressureSolveRecord* ps = sim.last_pressure_solve())
-            log.debug("step {}: pressure solve {} iterations, relative residual {:.3e}, {:.2f} ms",
-                      sim.steps(), ps->iterations, ps->residual, ps->seconds * 1e3);
+            log.debug(
+                "step {}: pressure solve {} iterations, relative residual {:.3e}, {:.2f} ms{}",
+                sim.steps(), ps->iterations, ps->residual, ps->seconds * 1e3,
+                ps->source_shift != 0
+                    ? fmt::format(", no free surface: source shift {:.3e} Pa", ps->source_shift)
+                    : std::string());
         const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
         progress.update(sim.steps(), sim.time(), sim.dt(),
                         static_cast<double>(total_particles) *

@@ -55,11 +55,23 @@ Real wall_row_term(Real rho0, const Vec<D>& gravity, const Vec<D>& x_w_minus_x_f
 // vanishes on a symmetric stencil; negative pressures (tension) are not applied, as in MPS;
 // neighbours at p' = 0 (surface particles, clamped tension) are not taken as the reference,
 // so the rows just below the surface are not pushed towards it.
-inline Real gradient_pressure(Real p) {
-    return p > 0 ? p : 0;
+//
+// Without a free surface (periodic or closed flows: no Dirichlet row) the pressure is fixed
+// only up to a constant, and its level is a choice (docs/PROJECTION.md, "No free surface").
+// There is no surface tension to suppress, and clamping at 0 would make the velocity depend
+// on that choice, so p' = p and every neighbour is a reference: both are unchanged by
+// p -> p + const, and they equal the forms above wherever p > 0.
+enum class PressureLevel : std::uint8_t {
+    surface, // fixed by the free surface's p = 0 rows (P5)
+    free     // no Dirichlet row: fixed by the solver's gauge
+};
+inline Real gradient_pressure(Real p, PressureLevel level = PressureLevel::surface) {
+    return p > 0 || level == PressureLevel::free ? p : 0;
 }
-inline Real gradient_reference(Real current, Real p_neighbour) {
-    return p_neighbour > 0 ? std::min(current, p_neighbour) : current;
+inline Real gradient_reference(Real current, Real p_neighbour,
+                               PressureLevel level = PressureLevel::surface) {
+    return p_neighbour > 0 || level == PressureLevel::free ? std::min(current, p_neighbour)
+                                                           : current;
 }
 
 // P7.

@@ -5,9 +5,15 @@
 namespace sluice {
 
 struct PressureSolveRecord {
-    int iterations = 0;  // BiCGSTAB iterations (two operator products each) or SOR sweeps
-    double residual = 0; // final |bhat - A p| / |bhat| of the row-scaled system (recomputed)
-    double seconds = 0;  // wall time of the solve on this rank
+    int iterations = 0;      // BiCGSTAB iterations (two operator products each) or SOR sweeps
+    double residual = 0;     // final |bhat - A p| / |bhat| of the row-scaled system (recomputed;
+                             // without a free surface / max(|bhat|, initial residual))
+    bool free_level = false; // no free-surface row: the mean pressure was fixed instead
+    double seconds = 0;      // wall time of the solve on this rank
+    // Without a free surface: the uniform correction lambda of the scaled source of every
+    // fluid row that made the singular system compatible (docs/PROJECTION.md, "No free
+    // surface"), in Pa; 0 when a free surface fixes the pressure level.
+    double source_shift = 0;
 };
 
 struct PressureSolveTotals {
