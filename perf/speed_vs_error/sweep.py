@@ -99,6 +99,9 @@ def variants(case: dict, quick: bool, projection: bool) -> list[tuple[str, dict]
                                                "numerics.delta_sph": 0.1}))
         out.append(("continuity, no delta-SPH", {"numerics.density": "continuity",
                                                  "numerics.delta_sph": 0.0}))
+    # The baseline from a lattice displaced by 1e-3 dx (particles.jitter): how much of the
+    # error comes from the exact symmetry of the starting lattice.
+    out.append(("jitter 1e-3", {"particles.jitter": 1e-3}))
     if projection:
         out.append(("projection", {"numerics.scheme": "projection"}))
     return out

@@ -762,6 +762,9 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
     c.dx = particles.required_number("dx", "lattice spacing [m]");
     particles.require(c.dx >= kMinDx, "dx",
                       fmt::format("must be at least {:g} m, got {}", kMinDx, c.dx));
+    c.jitter = particles.number("jitter", 0);
+    particles.require(c.jitter >= 0 && c.jitter <= 0.1, "jitter",
+                      fmt::format("must be in [0, 0.1] (a fraction of dx), got {}", c.jitter));
 
     read_blocks(top, c);
     check_block_thickness(top, c);

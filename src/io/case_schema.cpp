@@ -11,7 +11,7 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
     {"domain", {"lo", "hi", "periodic"}},
     {"fluid",
      {"rho0", "viscosity", "sound_speed", "gravity", "eos", "gamma", "background_pressure"}},
-    {"particles", {"dx"}},
+    {"particles", {"dx", "jitter"}},
     {"blocks",
      {"lo", "hi", "shape", "velocity", "profile", "amplitude", "angular_velocity", "strain_rate",
       "hydrostatic"}},

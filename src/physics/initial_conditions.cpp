@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <type_traits>
 #include <utility>
@@ -10,6 +11,16 @@
 namespace sluice {
 
 namespace {
+
+// A number in [-1/2, 1/2) from (id, axis), the same on every rank and machine: SplitMix64's
+// output function (Steele, Lea & Flood 2014) over id * 3 + axis.
+double lattice_offset(std::uint64_t id, int axis) {
+    std::uint64_t z = (id * 3 + static_cast<std::uint64_t>(axis) + 1) * 0x9E3779B97F4A7C15ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * 0x1.0p-53 - 0.5;
+}
 
 // Lattice points of spacing dx centred in [lo, hi): lo + (k + 1/2) dx.
 int lattice_count(double lo, double hi, double dx) {
@@ -229,6 +240,10 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
             // density comes from masses and positions, so the masses carry the initial field.
             const double m =
                 cfg.density == DensityScheme::summation ? rho * volume : cfg.rho0 * volume;
+            // particles.jitter: displaced after the fields were sampled at the lattice site (the
+            // displacement, at most 0.05 dx, only breaks the lattice's symmetry).
+            for (int d = 0; d < D && cfg.jitter > 0; ++d)
+                x[d] += Real(cfg.jitter * dx * lattice_offset(P.size(), d));
             P.push_back(static_cast<ParticleId>(P.size()), Kind::fluid, x, v, Real(rho), Real(m));
         });
     }

@@ -288,6 +288,8 @@ TEST_CASE("missing required keys") {
 
 TEST_CASE("physically impossible values") {
     expect_error(edit("dx = 0.02", "dx = 0"), "particles.dx");
+    expect_error(edit("dx = 0.02", "dx = 0.02\njitter = -0.01"), "particles.jitter");
+    expect_error(edit("dx = 0.02", "dx = 0.02\njitter = 0.2"), "particles.jitter");
     expect_error(edit("h_over_dx = 1.3", "h_over_dx = -1"), "numerics.h_over_dx");
     expect_error(edit("rho0 = 1000", "rho0 = -1000"), "fluid.rho0");
     expect_error(edit("viscosity = 1e-3", "viscosity = -1e-3"), "fluid.viscosity");

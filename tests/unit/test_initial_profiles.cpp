@@ -119,6 +119,32 @@ TEST_CASE("a rotating square block: v = omega x (x - c) and the patch pressure")
     CHECK(block_max_speed(b, 2) == doctest::Approx(2 * std::sqrt(0.5)));
 }
 
+TEST_CASE("particles.jitter: bounded, spread, reproducible displacements of the lattice") {
+    CaseConfig c = drop_case(0.1);
+    c.blocks[0].shape = BlockShape::box;
+    const Eos eos{EosType::linear, c.rho0, c.sound_speed, 7, 0};
+    Particles<2> lattice, moved, again;
+    add_fluid_blocks<2>(c, eos, lattice);
+    c.jitter = 0.01;
+    add_fluid_blocks<2>(c, eos, moved);
+    add_fluid_blocks<2>(c, eos, again);
+    REQUIRE(lattice.size() == 400);
+    REQUIRE(moved.size() == lattice.size());
+    double largest = 0, mean = 0;
+    for (std::size_t i = 0; i < moved.size(); ++i)
+        for (int d = 0; d < 2; ++d) {
+            const double off = (moved.x[i][d] - lattice.x[i][d]) / c.dx;
+            CHECK(std::abs(off) <= 0.005 + 1e-12);
+            largest = std::max(largest, std::abs(off));
+            mean += off / 800;
+            CHECK(again.x[i][d] == moved.x[i][d]); // a function of the particle id alone
+        }
+    CHECK(largest > 0.0049);           // the offsets fill [-jitter/2, jitter/2]
+    CHECK(std::abs(mean) < 0.0005);    // 800 uniform offsets: sigma of the mean 1e-4
+    CHECK(moved.v[7] == lattice.v[7]); // the fields (here the strain flow) of the lattice site
+    CHECK(moved.rho[7] == lattice.rho[7]);
+}
+
 TEST_CASE("an ellipse block holds the lattice sites inside the inscribed circle") {
     const double dx = 0.1; // R = 10 dx
     const CaseConfig c = drop_case(dx);

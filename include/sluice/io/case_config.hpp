@@ -120,6 +120,10 @@ struct CaseConfig {
 
     // [particles]
     double dx = 0; // lattice spacing [m]
+    // Each fluid particle starts displaced from its lattice site by up to +-jitter dx / 2 per
+    // axis, the same displacement on every rank and in every run (a hash of its id): breaks
+    // the exact symmetry of the lattice (see docs/CASE_REFERENCE.md, [particles]).
+    double jitter = 0;
     std::vector<FluidBlock> blocks;
 
     // [numerics]
