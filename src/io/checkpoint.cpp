@@ -112,6 +112,7 @@ void write_h5(const std::string& path, const Checkpoint<D>& c) {
     real("limit_force", s.limit_force);
     real("out_next", c.output.out_next);
     real("last_output_time", c.output.last_output_time);
+    real("wall_seconds", c.output.wall_seconds);
 
     const Particles<D>& P = c.particles;
     std::vector<std::uint64_t> ids(P.id.begin(), P.id.end());
@@ -262,6 +263,7 @@ Checkpoint<D> read_h5(const std::string& path, const std::string& case_fingerpri
     s.limit_force = real("limit_force");
     c.output.out_next = real("out_next");
     c.output.last_output_time = real("last_output_time");
+    c.output.wall_seconds = real("wall_seconds");
     if (!(s.dt > 0) || !std::isfinite(s.time) || s.step < 0)
         throw Refused(
             fmt::format("implausible state: step {}, t = {}, dt = {}", s.step, s.time, s.dt));

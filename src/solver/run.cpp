@@ -300,6 +300,11 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         total_particles = std::stoull(s);
     }
 
+    // Start of this segment's time loop; the wall time of earlier segments comes from the
+    // checkpoint, so summary.json can report the whole run's.
+    Clock::time_point t0;
+    const double earlier_wall_seconds = start.wall_seconds;
+
     // Collective: every rank's particles to rank 0, which writes the checkpoint.
     auto write_checkpoint_now = [&] {
         Checkpoint<D> c;
@@ -311,6 +316,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         c.solver = sim.solver_state();
         c.output.out_next = out_next;
         c.output.last_output_time = last_output_time;
+        c.output.wall_seconds =
+            earlier_wall_seconds + std::chrono::duration<double>(Clock::now() - t0).count();
         c.output.probe_next = probe_next;
         c.output.probe_bytes = probe_files->bytes();
         if (snapshots)
@@ -332,7 +339,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
 
     Progress progress(cfg.end_time, opts.quiet || !root, opts.verbose);
     progress.log_to([&log](const std::string& line) { log.file_only(line); });
-    const auto t0 = Clock::now();
+    t0 = Clock::now();
     const StopSignals signals;
     auto last_checkpoint = Clock::now(), last_stop_check = Clock::now();
     bool stop_file_seen = false;
@@ -462,6 +469,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     extra["last_dt"] = sim.dt();
     if (resumed)
         extra["restarted_from_step"] = start_step;
+    // wall_seconds covers this segment; this, every segment since step 0.
+    extra["wall_seconds_all_segments"] = earlier_wall_seconds + result.wall_seconds;
     extra["parallel"] = parallel;
     extra["neighbours"] = {{"support", support},
                            {"start", census_json(census_start)},

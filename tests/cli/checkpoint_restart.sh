@@ -58,6 +58,17 @@ grep -q -- "--restart $work/stop" "$work/stop.txt" || fail "stop message lacks t
 [ ! -e "$work/stop/summary.json" ] || fail "a stopped run wrote summary.json"
 "$exe" run "$case_file" --restart "$work/stop" "${sets[@]}" || fail "restart after stop: exit $?"
 grep -q '"restarted_from_step"' "$work/stop/summary.json" || fail "summary lacks restarted_from_step"
+# Wall time over all segments: equal to wall_seconds for a run that never stopped, and larger
+# by the first segment's (saved in the checkpoint) after a restart.
+wall_segments() { # summary.json -> "wall_seconds wall_seconds_all_segments"
+    /usr/bin/python3 -c "import json, sys; d = json.load(open(sys.argv[1])); \
+print(d['wall_seconds'], d['extra']['wall_seconds_all_segments'])" "$1"
+}
+read -r w all <<<"$(wall_segments "$work/ref/summary.json")"
+[ "$w" = "$all" ] || fail "uninterrupted run: wall_seconds_all_segments $all != wall_seconds $w"
+read -r w all <<<"$(wall_segments "$work/stop/summary.json")"
+/usr/bin/python3 -c "import sys; sys.exit(not float(sys.argv[2]) > float(sys.argv[1]) > 0)" "$w" "$all" ||
+    fail "restarted run: wall_seconds_all_segments $all not above this segment's $w"
 same_results "$work/ref" "$work/stop" "stop file + restart"
 
 # SIGTERM, then a restart with other threads and checkpoint settings (they do not change results).

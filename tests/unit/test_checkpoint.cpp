@@ -45,6 +45,7 @@ Checkpoint<D> sample_checkpoint(std::size_t n) {
     c.solver = SolverState{0.123456789, 4321, 1.0 / 3.0 * 1e-4, 2.5e-5, 1.75, 1e-4, 0.5, 2e-3};
     c.output.out_next = 0.15;
     c.output.last_output_time = 0.1;
+    c.output.wall_seconds = 12.345678901;
     c.output.probe_next = {0.13, 0.2000000001};
     c.output.probe_bytes = {1234, 56};
     c.output.snapshot_time = {0.0, 0.05, 0.1};
@@ -78,7 +79,8 @@ void check_equal(const Checkpoint<D>& a, const Checkpoint<D>& b) {
                         {a.solver.limit_viscous, b.solver.limit_viscous},
                         {a.solver.limit_force, b.solver.limit_force},
                         {a.output.out_next, b.output.out_next},
-                        {a.output.last_output_time, b.output.last_output_time}})
+                        {a.output.last_output_time, b.output.last_output_time},
+                        {a.output.wall_seconds, b.output.wall_seconds}})
         CHECK(same_bits(x, y));
     CHECK(a.output.probe_next == b.output.probe_next);
     CHECK(a.output.probe_bytes == b.output.probe_bytes);

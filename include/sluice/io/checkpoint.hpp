@@ -6,7 +6,7 @@
 //                    case_fingerprint (string, CaseConfig::fingerprint), dimension (int32),
 //                    ranks (int32, information only), sluice_version (string),
 //                    time, dt, dt_prev, u_max, limit_acoustic, limit_viscous, limit_force,
-//                    out_next, last_output_time (float64), step (int64)
+//                    out_next, last_output_time, wall_seconds (float64), step (int64)
 //   datasets         particles: id (N uint64), kind (N uint8), x, x_ref, v, v_half, a
 //                    (N x D float64; x_ref: positions at the last neighbour-list rebuild),
 //                    rho, mass, p (N float64), in curve order;
@@ -26,7 +26,7 @@
 namespace sluice {
 
 // Bumped whenever the layout above changes; other versions are refused.
-inline constexpr int checkpoint_format_version = 2; // 2: x_ref added
+inline constexpr int checkpoint_format_version = 3; // 2: x_ref added; 3: wall_seconds
 
 // The solver's state between two steps, besides the particles.
 struct SolverState {
@@ -46,6 +46,8 @@ struct OutputState {
     std::vector<std::uint64_t> probe_bytes;        // per probe: length of its CSV at the checkpoint
     std::vector<double> snapshot_time;             // per snapshot written: its time ...
     std::vector<std::uint64_t> snapshot_particles; // ... and particle count
+    // Wall time of the time loop up to the checkpoint, over every segment of the run.
+    double wall_seconds = 0;
 };
 
 template <int D>
