@@ -13,7 +13,9 @@ namespace sluice {
 namespace {
 
 // A number in [-1/2, 1/2) from (id, axis), the same on every rank and machine: SplitMix64's
-// output function (Steele, Lea & Flood 2014) over id * 3 + axis.
+// output function (Steele, Lea & Flood 2014) over id * 3 + axis. Not <random>: its
+// distributions differ between standard libraries, and a counter-based hash needs no generator
+// state to agree across ranks.
 double lattice_offset(std::uint64_t id, int axis) {
     std::uint64_t z = (id * 3 + static_cast<std::uint64_t>(axis) + 1) * 0x9E3779B97F4A7C15ull;
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;

@@ -300,10 +300,12 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         total_particles = std::stoull(s);
     }
 
-    // Start of this segment's time loop; the wall time of earlier segments comes from the
-    // checkpoint, so summary.json can report the whole run's.
+    // Wall time of this segment's time loop so far; earlier segments' is start.wall_seconds
+    // (from the checkpoint), so summary.json can report the whole run's.
     Clock::time_point t0;
-    const double earlier_wall_seconds = start.wall_seconds;
+    const auto loop_seconds = [&t0] {
+        return std::chrono::duration<double>(Clock::now() - t0).count();
+    };
 
     // Collective: every rank's particles to rank 0, which writes the checkpoint.
     auto write_checkpoint_now = [&] {
@@ -316,8 +318,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         c.solver = sim.solver_state();
         c.output.out_next = out_next;
         c.output.last_output_time = last_output_time;
-        c.output.wall_seconds =
-            earlier_wall_seconds + std::chrono::duration<double>(Clock::now() - t0).count();
+        c.output.wall_seconds = start.wall_seconds + loop_seconds();
         c.output.probe_next = probe_next;
         c.output.probe_bytes = probe_files->bytes();
         if (snapshots)
@@ -379,10 +380,10 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             log.debug(
                 "step {}: pressure solve {} iterations, relative residual {:.3e}, {:.2f} ms{}",
                 sim.steps(), ps->iterations, ps->residual, ps->seconds * 1e3,
-                ps->source_shift != 0
+                ps->free_level
                     ? fmt::format(", no free surface: source shift {:.3e} Pa", ps->source_shift)
                     : std::string());
-        const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+        const double wall = loop_seconds();
         progress.update(sim.steps(), sim.time(), sim.dt(),
                         static_cast<double>(total_particles) *
                             static_cast<double>(sim.steps() - start_step) / wall);
@@ -407,7 +408,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             result.stopped = true;
             result.steps = sim.steps();
             result.simulated_time = sim.time();
-            result.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+            result.wall_seconds = loop_seconds();
             result.checkpoint = checkpoint_file;
             return result;
         }
@@ -416,7 +417,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         sample(true);
     progress.finish();
 
-    result.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    result.wall_seconds = loop_seconds();
     result.steps = sim.steps();
     result.simulated_time = sim.time();
     result.particle_steps_per_second = static_cast<double>(total_particles) *
@@ -470,7 +471,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     if (resumed)
         extra["restarted_from_step"] = start_step;
     // wall_seconds covers this segment; this, every segment since step 0.
-    extra["wall_seconds_all_segments"] = earlier_wall_seconds + result.wall_seconds;
+    extra["wall_seconds_all_segments"] = start.wall_seconds + result.wall_seconds;
     extra["parallel"] = parallel;
     extra["neighbours"] = {{"support", support},
                            {"start", census_json(census_start)},
