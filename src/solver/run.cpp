@@ -482,7 +482,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                          {"imbalance_before", r.imbalance_before},
                          {"predicted_after", r.predicted_after},
                          {"particles_moved", r.particles_moved},
-                         {"seconds", r.seconds}});
+                         {"seconds", r.seconds},
+                         {"at_rebuild", r.at_rebuild}});
     extra["rebalances"] = rebal;
     nlohmann::json hist = nlohmann::json::array();
     for (const auto& h : sim.balance_history())

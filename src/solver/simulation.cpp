@@ -184,6 +184,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_,
                                             density_gradient_, skin_ > 0);
     window_busy_.assign(static_cast<std::size_t>(comm_.size()), 0.0);
+    cut_busy_ = window_busy_;
     if (cfg.scheme == Scheme::projection)
         init_projection();
 
@@ -282,9 +283,14 @@ void Simulation<D>::rebuild() {
     // Between rebuilds the particles stay where the last sort put them (each within skin/2 of
     // where it was sorted), halo plans and groups stay, and no particle changes owner.
     P_.resize(owned_); // drop the halo copies: they are received afresh next step
-    if (comm_.parallel() && !(balance_due_ && rebalance()))
-        migrate_to_neighbours();
-    balance_due_ = false;
+    if (comm_.parallel()) {
+        const auto cut = balance_due_ ? plan_rebalance() : std::nullopt;
+        if (cut)
+            apply_rebalance(*cut, true);
+        else
+            migrate_to_neighbours();
+    }
+    balance_due_ = balance_urgent_ = false;
     rebin_and_decompose();
     std::copy(P_.x.begin(), P_.x.end(), P_.x_ref.begin());
 }
@@ -531,6 +537,8 @@ void Simulation<D>::step() {
         rebuild();
         rebin_seconds_ +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    } else if (balance_due_ && balance_urgent_) {
+        rebuilt_ = rebalance_between_rebuilds();
     }
     profile_.between_wall += tasks::clock_seconds() - t_graph;
 }

@@ -1,7 +1,7 @@
 // The parts of Simulation<D> that share particles between ranks: the initial distribution,
 // the halo plan of a rebuild, migration to neighbouring ranks, the balancer (its window of busy
-// times and the rebalance at a rebuild) and the gather to rank 0 for output. Pure data
-// movement and bookkeeping; the step itself is in simulation.cpp.
+// times and the rebalance, at a rebuild or between rebuilds) and the gather to rank 0 for output.
+// Pure data movement and bookkeeping; the step itself is in simulation.cpp.
 #include "sluice/solver/simulation.hpp"
 
 #include "particle_messages.hpp"
@@ -138,8 +138,10 @@ void Simulation<D>::migrate_to_neighbours() {
 
 template <int D>
 void Simulation<D>::update_balance_window(const std::vector<double>& busy_per_rank) {
-    for (std::size_t r = 0; r < window_busy_.size(); ++r)
+    for (std::size_t r = 0; r < window_busy_.size(); ++r) {
         window_busy_[r] += busy_per_rank[r];
+        cut_busy_[r] += busy_per_rank[r];
+    }
     ++window_steps_;
     ++steps_since_rebalance_;
     const bool window_full = window_steps_ >= cfg_.rebalance_window;
@@ -149,18 +151,26 @@ void Simulation<D>::update_balance_window(const std::vector<double>& busy_per_ra
     const double measured = tasks::imbalance(window_busy_);
     if (window_full)
         balance_history_.push_back({steps_, measured});
-    // Acted on at the next rebuild (particles change owner only then).
+    // Acted on at the next rebuild, where moving particles costs little. Between rebuilds a
+    // rebalance costs an extra rebuild, and on many ranks one window's imbalance is mostly
+    // noise (the slowest rank changes from window to window; 10-step windows of the 2-D
+    // 232k-particle case on 16 ranks read 1.08-1.38 for a run whose total is 1.02): only an
+    // imbalance that holds, by twice the threshold, over every step since the cuts last moved
+    // (two windows at least) is acted on before the next rebuild. A flow at rest may never
+    // rebuild: the 3-D peer dam break starts at 1.4-1.9, its first rebuild far away.
     if (every || measured > 1 + cfg_.rebalance_threshold) {
         balance_due_ = true;
         balance_measured_ = measured;
+        const bool sustained = steps_since_rebalance_ >= 2 * cfg_.rebalance_window &&
+                               tasks::imbalance(cut_busy_) > 1 + 2 * cfg_.rebalance_threshold;
+        balance_urgent_ = every || sustained;
     }
     std::fill(window_busy_.begin(), window_busy_.end(), 0.0);
     window_steps_ = 0;
 }
 
 template <int D>
-bool Simulation<D>::rebalance() {
-    const double measured = balance_measured_;
+std::optional<typename Simulation<D>::PlannedCut> Simulation<D>::plan_rebalance() {
     const bool every = cfg_.rebalance_every > 0 && steps_since_rebalance_ >= cfg_.rebalance_every;
     // Every rank offers its occupied cells as units of the curve, each with its share (by
     // particle count) of its group's measured cost per step; all ranks compute the same new cut
@@ -192,20 +202,26 @@ bool Simulation<D>::rebalance() {
             units.push_back(u);
         }
     }
-    const tasks::RankLayout next = tasks::cut_ranks(units, comm_.size());
+    PlannedCut cut{tasks::cut_ranks(units, comm_.size()), 0.0, t0};
     std::vector<double> predicted(static_cast<std::size_t>(comm_.size()), 0.0);
     std::vector<double> now = predicted;
     for (const auto& u : units) {
-        predicted[static_cast<std::size_t>(next.rank_of(u.key))] += u.cost;
+        predicted[static_cast<std::size_t>(cut.layout.rank_of(u.key))] += u.cost;
         now[static_cast<std::size_t>(layout_.rank_of(u.key))] += u.cost;
     }
+    cut.predicted = tasks::imbalance(predicted);
     // Moving particles costs a step's worth of communication: only when it pays. Judged on
     // the same per-unit costs for the present and the new cuts, so noise cancels.
-    if (!every &&
-        tasks::imbalance(predicted) > tasks::imbalance(now) - cfg_.rebalance_threshold / 2)
-        return false;
+    if (!every && cut.predicted > tasks::imbalance(now) - cfg_.rebalance_threshold / 2)
+        return std::nullopt;
+    return cut;
+}
 
-    // Every particle goes to its owner under the new cuts.
+template <int D>
+void Simulation<D>::apply_rebalance(const PlannedCut& cut, bool at_rebuild) {
+    // Here P_ holds exactly this rank's particles. Every particle goes to its owner under the
+    // new cuts.
+    const tasks::RankLayout& next = cut.layout;
     std::vector<tasks::Bytes> out(static_cast<std::size_t>(comm_.size())), in;
     std::vector<std::size_t> keep;
     std::uint64_t moved = 0;
@@ -233,14 +249,35 @@ bool Simulation<D>::rebalance() {
     peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
     force_regroup_ = true;
     steps_since_rebalance_ = 0;
+    std::fill(cut_busy_.begin(), cut_busy_.end(), 0.0);
     const double t1 = tasks::clock_seconds();
-    rebalances_.push_back({steps_, measured, tasks::imbalance(predicted), moved_total, t1 - t0});
-    between_.push_back({"rebalance", -1, true, 0, t0, t1});
+    rebalances_.push_back(
+        {steps_, balance_measured_, cut.predicted, moved_total, t1 - cut.t0, at_rebuild});
+    between_.push_back({"rebalance", -1, true, 0, cut.t0, t1});
     if (opts_.log_rebalances && comm_.rank() == 0)
         fmt::print(stderr,
-                   "sluice: rebalance at step {}: imbalance {:.3f} -> {:.3f} (predicted), {} "
+                   "sluice: rebalance at step {}{}: imbalance {:.3f} -> {:.3f} (predicted), {} "
                    "particles moved, {:.1f} ms\n",
-                   steps_, measured, tasks::imbalance(predicted), moved_total, (t1 - t0) * 1e3);
+                   steps_, at_rebuild ? "" : " (between rebuilds)", balance_measured_,
+                   cut.predicted, moved_total, (t1 - cut.t0) * 1e3);
+}
+
+template <int D>
+bool Simulation<D>::rebalance_between_rebuilds() {
+    // Without this, a rebalance found due waits for the next rebuild, which in a flow that
+    // moves slowly (or not at all) can be hundreds of steps away, or never come.
+    balance_due_ = balance_urgent_ = false;
+    const auto cut = plan_rebalance();
+    if (!cut)
+        return false;
+    P_.resize(owned_); // drop the halo copies: they are received afresh next step
+    // Owner, sort, groups and lists follow the positions of the last rebuild, as after a
+    // restart: the lists the next step builds are those that rebuild built, so results stay
+    // bitwise those of any other layout, and the next rebuild comes at the same step.
+    std::swap(P_.x, P_.x_ref);
+    apply_rebalance(*cut, false);
+    rebin_and_decompose();
+    std::swap(P_.x, P_.x_ref);
     return true;
 }
 
@@ -268,7 +305,9 @@ Particles<D> Simulation<D>::gather_particles() const {
     template std::vector<std::vector<int>> Simulation<D>::boundary_groups() const;                 \
     template void Simulation<D>::migrate_to_neighbours();                                          \
     template void Simulation<D>::update_balance_window(const std::vector<double>&);                \
-    template bool Simulation<D>::rebalance();                                                      \
+    template std::optional<Simulation<D>::PlannedCut> Simulation<D>::plan_rebalance();             \
+    template void Simulation<D>::apply_rebalance(const PlannedCut&, bool);                         \
+    template bool Simulation<D>::rebalance_between_rebuilds();                                     \
     template Particles<D> Simulation<D>::gather_particles() const;
 SLUICE_RANK_MEMBERS(2)
 SLUICE_RANK_MEMBERS(3)

@@ -27,6 +27,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,7 @@ struct RebalanceRecord {
     double predicted_after = 0;  // from the measured group costs and the new cuts
     std::uint64_t particles_moved = 0;
     double seconds = 0;
+    bool at_rebuild = true; // false: between rebuilds, by the positions of the last rebuild
 };
 
 // Balance measured over one window of steps (the "imbalance curve").
@@ -151,7 +153,15 @@ private:
     void rebuild();
     void migrate_to_neighbours();
     void update_balance_window(const std::vector<double>& busy_per_rank);
-    bool rebalance();
+    // New cut points between ranks, gathered and decided identically on every rank.
+    struct PlannedCut {
+        tasks::RankLayout layout;
+        double predicted = 0; // imbalance under the new cuts, from the measured group costs
+        double t0 = 0;        // when planning began (the rebalance's time includes it)
+    };
+    std::optional<PlannedCut> plan_rebalance();
+    void apply_rebalance(const PlannedCut& cut, bool at_rebuild);
+    bool rebalance_between_rebuilds();
     void plan_halo();
     [[nodiscard]] std::vector<std::vector<int>> boundary_groups() const;
     void reduce_step_results(const std::string& task_error);
@@ -242,9 +252,11 @@ private:
     long graph_steps_ = 0;
     std::vector<double> last_busy_;   // per rank, busy seconds of the last step
     std::vector<double> window_busy_; // per rank, since the last rebalance or check
+    std::vector<double> cut_busy_;    // per rank, since the cut points last moved
     long window_steps_ = 0, steps_since_rebalance_ = 0;
-    bool balance_due_ = false;    // a rebalance is due at the next rebuild
+    bool balance_due_ = false;    // a rebalance is due (applied at the end of this step)
     double balance_measured_ = 0; // the imbalance that made it due
+    bool balance_urgent_ = false; // due and worth an extra rebuild: acted on between rebuilds
     std::vector<RebalanceRecord> rebalances_;
     std::vector<BalanceSample> balance_history_;
     bool force_regroup_ = false;
