@@ -57,7 +57,15 @@ run 1 --out "$work/ref" || fail "reference run: exit $?"
 run 2 --out "$work/a" --set checkpoint.every_steps=20 2>"$work/a.txt" &
 pid=$!
 wait_checkpoint "$work/a"
+# Rank 0 looks for the stop file at most every 200 ms, and the run may end soon after its
+# first checkpoint: freeze the ranks (not mpiexec, which does not pass SIGSTOP on) while the
+# file appears, for longer than that interval, as tests/cli/checkpoint_restart.sh does.
+ranks=($(pgrep -f "^$exe run .*--out $work/a "))
+[ ${#ranks[@]} -eq 2 ] || fail "expected 2 rank processes, found ${#ranks[@]}"
+kill -STOP "${ranks[@]}"
 touch "$work/a/stop"
+sleep 0.3
+kill -CONT "${ranks[@]}"
 wait $pid
 code=$?
 [ $code -eq 4 ] || fail "2 ranks, stop file: exit code $code, expected 4 $(cat "$work/a.txt")"
