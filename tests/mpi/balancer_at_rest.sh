@@ -6,12 +6,7 @@
 # byte-identical to a one-rank run's.
 # Usage: balancer_at_rest.sh SLUICE_EXE SOURCE_DIR MPIEXEC
 set -euo pipefail
-exe=$1
-src=$2
-mpiexec=$3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
 
 args=(--threads 1 -q --set time.end_time=0.02 --set time.output_interval=0.01
     --set 'runtime.initial_decomposition="key-range"' --set 'runtime.balance_cost="particles"')

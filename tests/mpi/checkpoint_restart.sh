@@ -9,12 +9,7 @@
 #    on any rank stops all with exit code 3 naming the particle; neither hangs (timeout).
 # Usage: checkpoint_restart.sh SLUICE_EXE SOURCE_DIR MPIEXEC
 set -u
-exe=$(realpath "$1")
-src=$(realpath "$2")
-mpiexec=$3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 

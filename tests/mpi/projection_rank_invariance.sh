@@ -10,12 +10,7 @@
 # bordered solve with a free pressure level; pressure within 1e-6 rho U^2 / 2).
 # Usage: projection_rank_invariance.sh SLUICE_EXE SOURCE_DIR MPIEXEC
 set -euo pipefail
-exe=$1
-src=$2
-mpiexec=$3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
 case=$src/cases/projection_hydrostatic_2d.toml
 
 run() { # out ranks args...

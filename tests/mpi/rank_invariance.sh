@@ -7,12 +7,7 @@
 # some of them between two rebuilds of the Verlet lists (by the positions of the last one).
 # Usage: rank_invariance.sh SLUICE_EXE SOURCE_DIR MPIEXEC
 set -euo pipefail
-exe=$1
-src=$2
-mpiexec=$3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
 
 run() { # name ranks threads case args...
     local name=$1 ranks=$2 threads=$3 case=$4

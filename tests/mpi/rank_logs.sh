@@ -2,12 +2,7 @@
 # On several ranks every rank writes its own log (results/<case>/logs/rank_N.log) while only
 # rank 0 talks on the terminal. Usage: rank_logs.sh <sluice executable> <source dir> <mpiexec>
 set -u
-exe=$(realpath "$1")
-src=$(realpath "$2")
-mpiexec=$3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
