@@ -284,13 +284,13 @@ void Simulation<D>::rebuild() {
     // where it was sorted), halo plans and groups stay, and no particle changes owner.
     P_.resize(owned_); // drop the halo copies: they are received afresh next step
     if (comm_.parallel()) {
-        const auto cut = balance_due_ ? plan_rebalance() : std::nullopt;
+        const auto cut = balance_due_ != BalanceDue::no ? plan_rebalance() : std::nullopt;
         if (cut)
             apply_rebalance(*cut, true);
         else
             migrate_to_neighbours();
     }
-    balance_due_ = balance_urgent_ = false;
+    balance_due_ = BalanceDue::no;
     rebin_and_decompose();
     std::copy(P_.x.begin(), P_.x.end(), P_.x_ref.begin());
 }
@@ -537,7 +537,7 @@ void Simulation<D>::step() {
         rebuild();
         rebin_seconds_ +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    } else if (balance_due_ && balance_urgent_) {
+    } else if (balance_due_ == BalanceDue::now) {
         rebuilt_ = rebalance_between_rebuilds();
     }
     profile_.between_wall += tasks::clock_seconds() - t_graph;

@@ -159,11 +159,10 @@ void Simulation<D>::update_balance_window(const std::vector<double>& busy_per_ra
     // (two windows at least) is acted on before the next rebuild. A flow at rest may never
     // rebuild: the 3-D peer dam break starts at 1.4-1.9, its first rebuild far away.
     if (every || measured > 1 + cfg_.rebalance_threshold) {
-        balance_due_ = true;
         balance_measured_ = measured;
         const bool sustained = steps_since_rebalance_ >= 2 * cfg_.rebalance_window &&
                                tasks::imbalance(cut_busy_) > 1 + 2 * cfg_.rebalance_threshold;
-        balance_urgent_ = every || sustained;
+        balance_due_ = every || sustained ? BalanceDue::now : BalanceDue::at_rebuild;
     }
     std::fill(window_busy_.begin(), window_busy_.end(), 0.0);
     window_steps_ = 0;
@@ -266,7 +265,7 @@ template <int D>
 bool Simulation<D>::rebalance_between_rebuilds() {
     // Without this, a rebalance found due waits for the next rebuild, which in a flow that
     // moves slowly (or not at all) can be hundreds of steps away, or never come.
-    balance_due_ = balance_urgent_ = false;
+    balance_due_ = BalanceDue::no;
     const auto cut = plan_rebalance();
     if (!cut)
         return false;

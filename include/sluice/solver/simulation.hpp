@@ -254,9 +254,11 @@ private:
     std::vector<double> window_busy_; // per rank, since the last rebalance or check
     std::vector<double> cut_busy_;    // per rank, since the cut points last moved
     long window_steps_ = 0, steps_since_rebalance_ = 0;
-    bool balance_due_ = false;    // a rebalance is due (applied at the end of this step)
+    // When the rebalance found due is done: at the next rebuild, or at the end of this step
+    // even without one (worth an extra rebuild).
+    enum class BalanceDue { no, at_rebuild, now };
+    BalanceDue balance_due_ = BalanceDue::no;
     double balance_measured_ = 0; // the imbalance that made it due
-    bool balance_urgent_ = false; // due and worth an extra rebuild: acted on between rebuilds
     std::vector<RebalanceRecord> rebalances_;
     std::vector<BalanceSample> balance_history_;
     bool force_regroup_ = false;
