@@ -292,9 +292,7 @@ public:
         }
         out.pairs = n;
         out.periodic = periodic;
-        Real* r2s = out.factor.data();
-        for (std::size_t p = 0; p < n; ++p)
-            r2s[p] = factor(r2s[p]);
+        kernel_factors(factor, out.factor.data(), n);
     }
 
     // Fills `out` from a wider list built earlier (a Verlet list: build_list with support +
@@ -344,8 +342,18 @@ public:
         }
         out.pairs = n;
         out.periodic = wide.periodic;
+        kernel_factors(factor, r2s, n);
+    }
+
+    // r2s[p] = factor(r2s[p]) for p < n, as one vector loop. The factor is copied into a local
+    // first: it holds the kernel's constants, and read through a reference they could alias
+    // r2s, so GCC reloaded them every pair and kept this loop scalar, with the kernel's selects
+    // turned into branches (about half of select_pairs' time in 3-D).
+    template <class G>
+    static void kernel_factors(const G& factor, Real* r2s, std::size_t n) {
+        const G f = factor;
         for (std::size_t p = 0; p < n; ++p)
-            r2s[p] = factor(r2s[p]);
+            r2s[p] = f(r2s[p]);
     }
 
     [[nodiscard]] std::uint32_t begin(CellIndex c) const {
