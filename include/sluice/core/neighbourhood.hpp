@@ -345,10 +345,11 @@ public:
         kernel_factors(factor, r2s, n);
     }
 
-    // r2s[p] = factor(r2s[p]) for p < n, as one vector loop. The factor is copied into a local
-    // first: it holds the kernel's constants, and read through a reference they could alias
-    // r2s, so GCC reloaded them every pair and kept this loop scalar, with the kernel's selects
-    // turned into branches (about half of select_pairs' time in 3-D).
+    // r2s[p] = factor(r2s[p]) for p < n, as one vector loop (scalar, it was about half of
+    // select_pairs' time in 3-D). The factor is copied into a local first: it holds the
+    // kernel's constants, which read through a reference could alias r2s, so GCC reloaded them
+    // every pair or guarded the vector loop with an alias check. The cubic spline's loop also
+    // needs -fno-trapping-math (CMakeLists.txt) to vectorise.
     template <class G>
     static void kernel_factors(const G& factor, Real* r2s, std::size_t n) {
         const G f = factor;
