@@ -370,6 +370,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
     // The first stage finds the group's neighbours once; every later stage of the step reuses
     // them (positions do not change within a step).
     if (stage == 0) {
+        // The kernel by value: see Neighbourhood::kernel_factors.
         const auto factor = [kernel](Real r2) { return grad_factor(kernel, r2); };
         // Wall centres list only fluid partners: nothing reads wall-wall pairs.
         const auto partial = [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; };

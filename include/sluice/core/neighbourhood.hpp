@@ -346,10 +346,11 @@ public:
     }
 
     // r2s[p] = factor(r2s[p]) for p < n, as one vector loop (scalar, it was about half of
-    // select_pairs' time in 3-D). The factor is copied into a local first: it holds the
-    // kernel's constants, which read through a reference could alias r2s, so GCC reloaded them
-    // every pair or guarded the vector loop with an alias check. The cubic spline's loop also
-    // needs -fno-trapping-math (CMakeLists.txt) to vectorise.
+    // select_pairs' time in 3-D). The factor is copied into a local first, so the kernel
+    // constants it holds cannot alias r2s (GCC reloaded them every pair, or guarded the vector
+    // loop with an alias check); that only works if the factor holds them by value, as
+    // run_stage_with's does, not by reference. The cubic spline's loop also needs
+    // -fno-trapping-math (CMakeLists.txt) to vectorise.
     template <class G>
     static void kernel_factors(const G& factor, Real* r2s, std::size_t n) {
         const G f = factor;
