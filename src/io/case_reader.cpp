@@ -64,6 +64,8 @@ const std::vector<std::pair<std::string, CorrectionGradient>> kCorrectionGradien
     {"first_order", CorrectionGradient::first_order}};
 const std::vector<std::pair<std::string, DensityScheme>> kDensity = {
     {"summation", DensityScheme::summation}, {"continuity", DensityScheme::continuity}};
+const std::vector<std::pair<std::string, Dissipation>> kDissipation = {
+    {"artificial", Dissipation::artificial}, {"riemann", Dissipation::riemann}};
 const std::vector<std::pair<std::string, DensityDiffusion>> kDiffusion = {
     {"antuono", DensityDiffusion::antuono}, {"fourtakas", DensityDiffusion::fourtakas}};
 const std::vector<std::pair<std::string, BalanceCost>> kBalanceCost = {
@@ -292,6 +294,27 @@ void read_numerics(const Section& s, CaseConfig& c) {
     s.require(
         c.artificial_viscosity >= 0 && c.artificial_viscosity <= 10, "artificial_viscosity",
         fmt::format("must be in [0, 10] (typically 0.01 to 0.1), got {}", c.artificial_viscosity));
+    c.wall_artificial_viscosity = s.boolean("wall_artificial_viscosity").value_or(false);
+    c.dissipation = s.choice("dissipation", Dissipation::artificial, kDissipation);
+    if (c.dissipation == Dissipation::riemann) {
+        // The Riemann solver is the scheme's dissipation in both equations: refuse the keys it
+        // replaces instead of ignoring them.
+        s.require(c.scheme == Scheme::wcsph, "dissipation",
+                  "\"riemann\" applies only to numerics.scheme = \"wcsph\"");
+        s.require(c.density == DensityScheme::continuity, "dissipation",
+                  "\"riemann\" needs numerics.density = \"continuity\"");
+        s.require(s.node("delta_sph") == nullptr || c.delta_sph == 0, "delta_sph",
+                  "must be 0 with numerics.dissipation = \"riemann\" (the Riemann solver "
+                  "diffuses density itself)");
+        s.require(s.node("density_diffusion") == nullptr, "density_diffusion",
+                  "does not apply with numerics.dissipation = \"riemann\"");
+        s.require(s.node("wall_artificial_viscosity") == nullptr, "wall_artificial_viscosity",
+                  "does not apply with numerics.dissipation = \"riemann\"");
+        s.require(c.artificial_viscosity == 0, "artificial_viscosity",
+                  "must be 0 with numerics.dissipation = \"riemann\" (the Riemann solver is "
+                  "the scheme's viscosity)");
+        c.delta_sph = 0;
+    }
     c.shifting = s.number("shifting", 0);
     s.require(c.shifting >= 0 && c.shifting <= 20, "shifting",
               fmt::format("must be in [0, 20], got {}", c.shifting));

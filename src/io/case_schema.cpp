@@ -17,7 +17,7 @@ const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
       "hydrostatic"}},
     {"numerics",
      {"scheme", "kernel", "h_over_dx", "density", "delta_sph", "density_diffusion",
-      "artificial_viscosity", "shifting", "cfl", "viscous_cfl", "force_cfl", "dt",
+      "artificial_viscosity", "wall_artificial_viscosity", "dissipation", "shifting", "cfl", "viscous_cfl", "force_cfl", "dt",
       "neighbour_skin"}},
     {"walls",
      {"model", "tank_lo", "tank_hi", "tank_faces", "restitution", "no_slip", "planes", "boxes"}},

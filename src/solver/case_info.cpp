@@ -86,6 +86,9 @@ CaseInfo describe_case(const CaseConfig& cfg) {
             cfg.projection.tolerance, cfg.projection.gamma));
     else if (cfg.density == DensityScheme::summation)
         ph.push_back("density: summation");
+    else if (cfg.dissipation == Dissipation::riemann)
+        ph.push_back("density: continuity; dissipation: low-dissipation Riemann solver (Zhang, "
+                     "Hu & Adams 2017)");
     else
         ph.push_back(cfg.delta_sph > 0 ? fmt::format("density: continuity + delta-SPH (delta = {})",
                                                      cfg.delta_sph)

@@ -4,6 +4,7 @@
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/initial_conditions.hpp"
 #include "sluice/physics/integrator.hpp"
+#include "sluice/physics/riemann.hpp"
 #include "sluice/physics/shifting.hpp"
 
 #include "projection_data.hpp"
@@ -87,7 +88,12 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
                                                Real(cfg.sound_speed * cfg.sound_speed)};
     density_gradient_ = delta_h_c0_ > 0 && cfg.density_diffusion == DensityDiffusion::antuono;
     momentum_.wall_viscous = cfg.no_slip;
+    momentum_.wall_artificial = cfg.wall_artificial_viscosity;
     momentum_.p_floor = Real(cfg.background_pressure);
+    riemann_dissipation_ = cfg.dissipation == Dissipation::riemann;
+    riemann_ = RiemannParams<D>{
+        momentum_.gravity, Real(cfg.rho0), Real(cfg.sound_speed),  Real(3),
+        momentum_.mu,      momentum_.h,    momentum_.wall_viscous, momentum_.p_floor};
 
     ts_params_ =
         TimeStepParams{h_, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl, cfg.force_cfl};
@@ -414,7 +420,10 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
         break;
     case StageKind::accel:
         for (CellIndex c : cells) {
-            acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a));
+            if (riemann_dissipation_)
+                riemann_acceleration(nb, kernel, riemann_, c, P_, std::span<Vec<D>>(P_.a));
+            else
+                acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a));
             if (cfg_.shifting > 0) {
                 const ShiftingParams sp{Real(cfg_.shifting * u_max_ * h_ * dt_),
                                         kernel.W(Real(cfg_.dx)), Real(0.1 * cfg_.dx)};
@@ -440,7 +449,11 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
         Real speed = 0, disp2 = 0;
         std::string failure;
         for (CellIndex c : cells) {
-            if (continuity_)
+            if (riemann_dissipation_)
+                riemann_continuity_rate(nb, kernel, riemann_, c, P_,
+                                        std::span<const Vec<D>>(P_.v_half),
+                                        std::span<Real>(P_.drho));
+            else if (continuity_)
                 continuity_rate(nb, kernel, diffusion_, c, P_, std::span<const Vec<D>>(P_.v_half),
                                 std::span<Real>(P_.drho));
             for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {

@@ -28,6 +28,8 @@ enum class CorrectionGradient { second_order, first_order };
 enum class DensityScheme { summation, continuity };
 // Form of the delta-SPH density diffusion term (docs/CASE_REFERENCE.md, [numerics]).
 enum class DensityDiffusion { antuono, fourtakas };
+// How WCSPH dissipates: artificial viscosity + delta-SPH, or a Riemann solver per pair.
+enum class Dissipation { artificial, riemann };
 enum class EosType { linear, tait };
 enum class WallModel { none, reflective, dummy };
 // Initial velocity (and matching pressure) over a block: uniform, the Taylor-Green vortex,
@@ -134,6 +136,14 @@ struct CaseConfig {
     double delta_sph = 0.1; // delta-SPH diffusion coefficient (0 = off; continuity only)
     DensityDiffusion density_diffusion = DensityDiffusion::antuono;
     double artificial_viscosity = 0; // Monaghan alpha (0 = off)
+    // riemann: Zhang, Hu & Adams (2017) low-dissipation Riemann solver in the momentum and
+    // continuity equations (physics/riemann.hpp); replaces artificial viscosity and delta-SPH.
+    Dissipation dissipation = Dissipation::artificial;
+    // Artificial viscosity also across fluid-wall pairs (with the walls' no-slip velocity).
+    // Off by default: there it acts as a friction on flow along a wall, which slows the lowest
+    // layer of a surge front, blunts its nose and doubles the corner impact pressure
+    // (docs/IMPACT_LOADS.md).
+    bool wall_artificial_viscosity = false;
     double shifting = 0;        // particle-shifting coefficient A (0 = off; 4 = Sun et al. 2017)
     double cfl = 0.25;          // acoustic CFL number: dt <= cfl*h/(c0 + |v|max)
     double viscous_cfl = 0.125; // dt <= viscous_cfl * h^2 / nu

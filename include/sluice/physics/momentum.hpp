@@ -5,8 +5,13 @@
 //               (Morris et al. 1997; seed 000 eq. 7)
 //   artificial: -sum_j m_j Pi_ij grad_i W_ij, Pi_ij = -alpha c0 h (v_ij.x_ij)/(r^2+eta^2)/rho_ij
 //               for approaching pairs (Monaghan 1992)
-// Wall (dummy) neighbours enter with their extrapolated pressure/density and, in the viscous
-// terms, their boundary velocity v_bc (Adami, Hu & Adams 2012). In fluid-wall pairs both
+// Wall (dummy) neighbours enter with their extrapolated pressure/density and, in the laminar
+// viscous term, their boundary velocity v_bc (Adami, Hu & Adams 2012). The artificial
+// viscosity acts on fluid-wall pairs only when asked (wall_artificial): with the mirrored
+// no-slip velocity every wall particle ahead of a particle that slides along the wall counts
+// as approaching, so the term brakes flow along a wall, not only flow into it; on a dam-break
+// surge it slows the lowest layer, blunts the front and doubles the corner impact pressure
+// (docs/IMPACT_LOADS.md). In fluid-wall pairs both
 // pressures are clipped from below at the background pressure: a wall may push but never
 // pull, otherwise the tension of an expanding free-surface tip (rho < rho0) drags particles
 // into the wall.
@@ -21,12 +26,13 @@ namespace sluice {
 template <int D>
 struct MomentumParams {
     Vec<D> gravity = Vec<D>::Zero();
-    Real mu = 0;              // dynamic viscosity [Pa s]
-    Real alpha = 0;           // artificial viscosity coefficient
-    Real c0 = 0;              // reference speed of sound
-    Real h = 0;               // smoothing length
-    bool wall_viscous = true; // no-slip walls: viscous terms act against wall particles
-    Real p_floor = 0;         // lowest pressure a fluid-wall pair acts with (background pressure)
+    Real mu = 0;                  // dynamic viscosity [Pa s]
+    Real alpha = 0;               // artificial viscosity coefficient
+    Real c0 = 0;                  // reference speed of sound
+    Real h = 0;                   // smoothing length
+    bool wall_viscous = true;     // no-slip walls: the laminar viscous term acts on wall pairs
+    bool wall_artificial = false; // artificial viscosity on fluid-wall pairs too (with v_bc)
+    Real p_floor = 0; // lowest pressure a fluid-wall pair acts with (background pressure)
 };
 
 template <int D, class K>
@@ -62,11 +68,13 @@ SLUICE_FLATTEN void acceleration(const Neighbourhood<D>& nb, const K& kernel,
                     s = p_over_rho2_i + P.p_over_rho2[j];
                 }
                 Vec<D> pair = Vec<D>::Zero();
-                if (!wall || prm.wall_viscous) {
+                const bool laminar = !wall || prm.wall_viscous;
+                const bool artificial = !wall || prm.wall_artificial;
+                if (laminar || artificial) {
                     const Vec<D> v_ij = v_i - (wall ? P.v_bc[j] : P.v[j]);
-                    if (two_mu > 0)
+                    if (two_mu > 0 && laminar)
                         pair = m_j * two_mu / (rho_i * rho_j) * (dWr * r2 / (r2 + eta2)) * v_ij;
-                    if (av > 0) {
+                    if (av > 0 && artificial) {
                         // Only approaching pairs (v_ij . x_ij < 0) feel it. min() instead of an
                         // `if`: about half the pairs approach, so the branch mispredicted often;
                         // for the others the term is an exact zero.

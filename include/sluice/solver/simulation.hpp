@@ -11,6 +11,7 @@
 #include "sluice/physics/eos.hpp"
 #include "sluice/physics/kernels.hpp"
 #include "sluice/physics/momentum.hpp"
+#include "sluice/physics/riemann.hpp"
 #include "sluice/physics/timestep.hpp"
 #include "sluice/physics/walls.hpp"
 #include "sluice/solver/halo_fields.hpp"
@@ -193,6 +194,8 @@ private:
     AnyKernel<D> kernel_;
     Eos eos_;
     MomentumParams<D> momentum_;
+    RiemannParams<D> riemann_; // numerics.dissipation = "riemann"
+    bool riemann_dissipation_ = false;
     TimeStepParams ts_params_;
     std::vector<Plane<D>> planes_;
     Vec<D> domain_lo_, domain_hi_;
