@@ -22,9 +22,11 @@
 //
 // Fixed dummy walls (Zhang et al. 2017, section 3.3): the right state of a fluid-wall pair
 // has the wall's extrapolated pressure and density (Adami, Hu & Adams 2012,
-// dummy_wall_state) and the mirrored normal velocity U_R = -U_L (a wall at rest), so
-// dU = 2 U_L and v* has no normal part beyond U* = dp/(2 rho_bar c0):
+// dummy_wall_state) and the mirrored velocity U_R = -U_L (a wall at rest), so v* has no
+// part along e_ij beyond U* = dp/(2 rho_bar c0):
 //   drho_i/dt += 2 rho_i V_w F_iw [ v_i . dx + r dp/(2 rho_bar c0) ]
+// Unlike Zhang et al., the momentum equation takes no dissipation from fluid-wall pairs (see
+// riemann_acceleration): P* there is the density-weighted mean pressure.
 // The wall pressure is clipped below at the background pressure in the momentum equation,
 // as in momentum.hpp (a wall pushes, never pulls).
 #include "sluice/core/neighbourhood.hpp"
@@ -78,8 +80,12 @@ SLUICE_FLATTEN void riemann_acceleration(const Neighbourhood<D>& nb, const K& ke
                 const Real r = std::sqrt(r2);
                 const Real rho_j = P.rho[j];
                 const bool wall = P.kind[j] == Kind::wall;
-                // dU = (v_i - v_j) . e_ij with e_ij = -dx / r; a fixed wall mirrors U_L.
-                const Real du = wall ? -2 * v_i.dot(dx) / r : -(v_i - P.v[j]).dot(dx) / r;
+                // dU = (v_i - v_j) . e_ij with e_ij = -dx / r. No dissipation in fluid-wall
+                // pairs: mirrored along e_ij (U_R = -U_L), every wall particle ahead of a
+                // particle sliding along the wall would count as approaching, and the term
+                // would brake flow along the wall (the same defect as artificial viscosity on
+                // wall pairs, momentum.hpp).
+                const Real du = wall ? Real(0) : -(v_i - P.v[j]).dot(dx) / r;
                 const Real p_i = wall ? std::max(P.p[i], prm.p_floor) : P.p[i];
                 const Real p_j = wall ? std::max(P.p[j], prm.p_floor) : P.p[j];
                 const Real p_star =

@@ -153,6 +153,7 @@ CHOICES = {
     "walls.tank_faces": [["w+"], "x-", ["x-", "x-"]],
     "output.fields": [["pressur"], "pressure", ["id", "id"]],
     "output.snapshots": ["yes", 1],
+    "numerics.wall_artificial_viscosity": ["no", 0],
     "blocks[0].hydrostatic": ["no"],
     "blocks[0].profile": ["swirl"],
     # Names become folder/file names: nothing may escape results/<case>/.
