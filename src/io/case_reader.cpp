@@ -651,12 +651,15 @@ void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
             s.require(lo < hi, "hi",
                       fmt::format("must be above lo on every axis; on {}: lo = {}, hi = {}",
                                   kAxis[a], lo, hi));
-        if (std::max(lo, wlo[a]) > std::min(hi, whi[a]) + eps)
-            s.fail(p.lo && lo > wlo[a] ? "lo" : "hi",
-                   fmt::format("the force region touches no wall: on {} it is [{}, {}], the "
-                               "{}'s wall particles lie in [{}, {}]",
-                               kAxis[a], lo, hi, p.wall.box >= 0 ? "box" : "face", wlo[a],
-                               whi[a]));
+        if (std::max(lo, wlo[a]) > std::min(hi, whi[a]) + eps) {
+            const bool low = p.lo && lo > whi[a];
+            s.fail(low ? "lo" : "hi",
+                   fmt::format("the force region touches no wall: on {}, {} = {} is {} the "
+                               "{}'s wall particles, which lie in [{}, {}]",
+                               kAxis[a], low ? "lo" : "hi", low ? lo : hi,
+                               low ? "above" : "below", p.wall.box >= 0 ? "box" : "face",
+                               wlo[a], whi[a]));
+        }
     }
 }
 
