@@ -212,6 +212,36 @@ Real sensor_with(const Particles<D>& P, const K& kernel, const Vec<D>& centre, i
 } // namespace
 
 template <int D>
+void refresh_dummy_walls(Particles<D>& P, const AnyKernel<D>& kernel, const Eos& eos,
+                         const Vec<D>& gravity, Real wall_volume) {
+    std::visit(
+        [&](const auto& k) {
+            const Real support = k.support();
+            const FluidCells<D> fluid(P, support);
+            for (std::size_t w = 0; w < P.size(); ++w) {
+                if (P.kind[w] != Kind::wall)
+                    continue;
+                Real sum_w = 0, sum_pw = 0;
+                Vec<D> sum_rho_r = Vec<D>::Zero();
+                fluid.around(P.x[w], [&](std::size_t f) {
+                    const Vec<D> dx = P.x[w] - P.x[f];
+                    const Real r2 = dx.squaredNorm();
+                    if (r2 >= support * support)
+                        return;
+                    const Real W = k.W(std::sqrt(r2));
+                    sum_w += W;
+                    sum_pw += P.p[f] * W;
+                    sum_rho_r += P.rho[f] * W * dx;
+                });
+                P.p[w] = sum_w > 0 ? (sum_pw + gravity.dot(sum_rho_r)) / sum_w : eos.p_background;
+                P.rho[w] = eos.density(P.p[w]);
+                P.mass[w] = P.rho[w] * wall_volume;
+            }
+        },
+        kernel);
+}
+
+template <int D>
 std::vector<std::size_t> wall_particles_in(const Particles<D>& P, const Vec<D>& lo,
                                            const Vec<D>& hi) {
     std::vector<std::size_t> out;
@@ -245,6 +275,10 @@ Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel, con
         kernel);
 }
 
+template void refresh_dummy_walls<2>(Particles<2>&, const AnyKernel<2>&, const Eos&,
+                                     const Vec<2>&, Real);
+template void refresh_dummy_walls<3>(Particles<3>&, const AnyKernel<3>&, const Eos&,
+                                     const Vec<3>&, Real);
 template std::vector<std::size_t> wall_particles_in<2>(const Particles<2>&, const Vec<2>&,
                                                        const Vec<2>&);
 template std::vector<std::size_t> wall_particles_in<3>(const Particles<3>&, const Vec<3>&,

@@ -351,10 +351,23 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         std::optional<Particles<D>> all;
         if (probes_due || snap_due)
             all = sim.gather_particles();
+        // Before the first step the wall particles hold no extrapolated pressure yet: the
+        // probes (wall forces, area sensors) see the state the first step will see, in a copy
+        // (the snapshot keeps the state as it is).
+        std::optional<Particles<D>> refreshed;
+        if (root && probes_due && sim.steps() == 0 && cfg.walls == WallModel::dummy) {
+            refreshed = *all;
+            Vec<D> g;
+            for (int d = 0; d < D; ++d)
+                g[d] = Real(cfg.gravity[static_cast<std::size_t>(d)]);
+            refresh_dummy_walls(*refreshed, sim.kernel(), sim.eos(), g,
+                                Real(std::pow(cfg.dx, D)));
+        }
+        const Particles<D>* probe_state = refreshed ? &*refreshed : all ? &*all : nullptr;
         for (std::size_t k = 0; k < cfg.probes.size(); ++k)
             if (due(k)) {
                 if (root)
-                    probe_files->write(k, t, probe_value(sim, *all, cfg.probes[k]));
+                    probe_files->write(k, t, probe_value(sim, *probe_state, cfg.probes[k]));
                 probe_last[k] = t;
                 while (probe_next[k] <= t + eps)
                     probe_next[k] += probe_every[k];

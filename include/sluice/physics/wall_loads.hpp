@@ -19,6 +19,7 @@
 // extrapolation); the boundary velocity v_bc of the viscous terms is recomputed the same way
 // (it is not part of the gathered state) unless `adami_v_bc` is false.
 #include "sluice/core/particles.hpp"
+#include "sluice/physics/eos.hpp"
 #include "sluice/physics/kernels.hpp"
 #include "sluice/physics/riemann.hpp"
 
@@ -83,6 +84,18 @@ template <int D>
 Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel, const Vec<D>& centre,
                           int normal_axis, Real diameter, Real spacing);
 
+// The Adami state of every dummy wall particle (pressure, density, mass = rho_w wall_volume)
+// from the fluid around it, as the step's walls stage computes it (walls.hpp,
+// dummy_wall_state). The run calls it on its copy of the initial state, whose wall particles
+// have not been through a step yet (their pressure would read as the background's).
+template <int D>
+void refresh_dummy_walls(Particles<D>& P, const AnyKernel<D>& kernel, const Eos& eos,
+                         const Vec<D>& gravity, Real wall_volume);
+
+extern template void refresh_dummy_walls<2>(Particles<2>&, const AnyKernel<2>&, const Eos&,
+                                            const Vec<2>&, Real);
+extern template void refresh_dummy_walls<3>(Particles<3>&, const AnyKernel<3>&, const Eos&,
+                                            const Vec<3>&, Real);
 extern template std::vector<std::size_t> wall_particles_in<2>(const Particles<2>&, const Vec<2>&,
                                                               const Vec<2>&);
 extern template std::vector<std::size_t> wall_particles_in<3>(const Particles<3>&, const Vec<3>&,
