@@ -656,9 +656,8 @@ void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
             s.fail(low ? "lo" : "hi",
                    fmt::format("the force region touches no wall: on {}, {} = {} is {} the "
                                "{}'s wall particles, which lie in [{}, {}]",
-                               kAxis[a], low ? "lo" : "hi", low ? lo : hi,
-                               low ? "above" : "below", p.wall.box >= 0 ? "box" : "face",
-                               wlo[a], whi[a]));
+                               kAxis[a], low ? "lo" : "hi", low ? lo : hi, low ? "above" : "below",
+                               p.wall.box >= 0 ? "box" : "face", wlo[a], whi[a]));
         }
     }
 }
@@ -768,9 +767,9 @@ void read_probes(const Section& root, CaseConfig& c) {
                 p.diameter = s.required_number("diameter", "sensor diameter [m]");
                 s.require(p.diameter > 0, "diameter",
                           fmt::format("must be > 0 (a sensor's diameter), got {}", p.diameter));
-                s.require(p.diameter <= kMaxCoordinate, "diameter",
-                          fmt::format("must be at most {:g} m, got {}", kMaxCoordinate,
-                                      p.diameter));
+                s.require(
+                    p.diameter <= kMaxCoordinate, "diameter",
+                    fmt::format("must be at most {:g} m, got {}", kMaxCoordinate, p.diameter));
                 read_sensor_wall(s, c, p);
             } else {
                 s.require(s.node("face") == nullptr && s.node("box") == nullptr,
@@ -803,7 +802,7 @@ void read_probes(const Section& root, CaseConfig& c) {
         if (p.type == ProbeType::surge_front) {
             const std::string dir = s.string("direction").value_or("+x");
             const bool known = dir.size() == 2 && (dir[0] == '+' || dir[0] == '-') &&
-                            dir[1] >= 'x' && dir[1] < 'x' + c.dimension;
+                               dir[1] >= 'x' && dir[1] < 'x' + c.dimension;
             s.require(known, "direction",
                       fmt::format("unknown value \"{}\"; allowed: {}", dir,
                                   c.dimension == 3 ? "\"+x\", \"-x\", \"+y\", \"-y\", \"+z\", "

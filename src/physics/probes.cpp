@@ -230,8 +230,7 @@ Real surge_front_directed(const Particles<D>& ps, Real dx, int axis, bool negati
             continue;
         key[static_cast<std::size_t>(depth)] = 0;
         const Real s = sign * ps.x[i][axis];
-        auto [it, added] =
-            columns.try_emplace(key, 0L, -std::numeric_limits<Real>::infinity());
+        auto [it, added] = columns.try_emplace(key, 0L, -std::numeric_limits<Real>::infinity());
         ++it->second.first;
         it->second.second = std::max(it->second.second, s);
     }

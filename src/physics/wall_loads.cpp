@@ -120,8 +120,7 @@ WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<
             if (prm.riemann) {
                 const Real r = std::sqrt(r2);
                 const Real du = -2 * v_i.dot(dx) / r;
-                const Real p_star =
-                    riemann_pressure(rho_i, rho_j, pi, pj, du, prm.c0, prm.limiter);
+                const Real p_star = riemann_pressure(rho_i, rho_j, pi, pj, du, prm.c0, prm.limiter);
                 s = 2 * (p_star - prm.p_gauge) / (rho_i * rho_j);
             } else {
                 s = (pi - prm.p_gauge) / (rho_i * rho_i) + (pj - prm.p_gauge) / (rho_j * rho_j);
@@ -258,9 +257,8 @@ std::vector<std::size_t> wall_particles_in(const Particles<D>& P, const Vec<D>& 
 }
 
 template <int D>
-WallLoad wall_load(const Particles<D>& P, const AnyKernel<D>& kernel,
-                   const WallLoadParams<D>& prm, const std::vector<std::size_t>& walls,
-                   const Vec<D>& moment_point) {
+WallLoad wall_load(const Particles<D>& P, const AnyKernel<D>& kernel, const WallLoadParams<D>& prm,
+                   const std::vector<std::size_t>& walls, const Vec<D>& moment_point) {
     return std::visit([&](const auto& k) { return load_with(P, k, prm, walls, moment_point); },
                       kernel);
 }
@@ -269,16 +267,14 @@ template <int D>
 Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel, const Vec<D>& centre,
                           int normal_axis, Real diameter, Real spacing) {
     return std::visit(
-        [&](const auto& k) {
-            return sensor_with(P, k, centre, normal_axis, diameter, spacing);
-        },
+        [&](const auto& k) { return sensor_with(P, k, centre, normal_axis, diameter, spacing); },
         kernel);
 }
 
-template void refresh_dummy_walls<2>(Particles<2>&, const AnyKernel<2>&, const Eos&,
-                                     const Vec<2>&, Real);
-template void refresh_dummy_walls<3>(Particles<3>&, const AnyKernel<3>&, const Eos&,
-                                     const Vec<3>&, Real);
+template void refresh_dummy_walls<2>(Particles<2>&, const AnyKernel<2>&, const Eos&, const Vec<2>&,
+                                     Real);
+template void refresh_dummy_walls<3>(Particles<3>&, const AnyKernel<3>&, const Eos&, const Vec<3>&,
+                                     Real);
 template std::vector<std::size_t> wall_particles_in<2>(const Particles<2>&, const Vec<2>&,
                                                        const Vec<2>&);
 template std::vector<std::size_t> wall_particles_in<3>(const Particles<3>&, const Vec<3>&,

@@ -25,8 +25,8 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
-#include <limits>
 #include <fmt/format.h>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -109,8 +109,7 @@ std::vector<double> probe_value(const Simulation<D>& sim, const Particles<D>& P,
     }
     case ProbeType::surge_front:
         return {double(surge_front_directed(P, Real(dx), probe.direction_axis,
-                                            probe.direction_negative,
-                                            Real(probe.min_thickness)))};
+                                            probe.direction_negative, Real(probe.min_thickness)))};
     case ProbeType::force: {
         Vec<D> about = Vec<D>::Zero();
         if (probe.moment_about)
@@ -360,8 +359,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             Vec<D> g;
             for (int d = 0; d < D; ++d)
                 g[d] = Real(cfg.gravity[static_cast<std::size_t>(d)]);
-            refresh_dummy_walls(*refreshed, sim.kernel(), sim.eos(), g,
-                                Real(std::pow(cfg.dx, D)));
+            refresh_dummy_walls(*refreshed, sim.kernel(), sim.eos(), g, Real(std::pow(cfg.dx, D)));
         }
         const Particles<D>* probe_state = refreshed ? &*refreshed : all ? &*all : nullptr;
         for (std::size_t k = 0; k < cfg.probes.size(); ++k)

@@ -98,10 +98,10 @@ TEST_CASE("wall load: Newton's third law against the momentum equation") {
             m.alpha = Real(0.1);
             m.wall_artificial = true;
         }
-        const Vec<2> rate = t.fluid_momentum_rate(kernel, [&](const auto& nb, const auto& k,
-                                                              CellIndex c) {
-            acceleration(nb, k, m, c, t.P, std::span<Vec<2>>(t.P.a));
-        });
+        const Vec<2> rate =
+            t.fluid_momentum_rate(kernel, [&](const auto& nb, const auto& k, CellIndex c) {
+                acceleration(nb, k, m, c, t.P, std::span<Vec<2>>(t.P.a));
+            });
         WallLoadParams<2> w;
         w.p_floor = m.p_floor;
         w.mu = m.mu;

@@ -38,9 +38,9 @@ TEST_CASE("Dam break surge front follows Martin & Moyce (n^2 = 2)") {
         sim.step();
         if (sim.time() >= next_sample) {
             Ts.push_back(sim.time() * T_scale);
-            Zs.push_back(surge_front_directed(sim.particles(), Real(cfg.dx), 0, false,
-                                              Real(2 * cfg.dx)) /
-                         a);
+            Zs.push_back(
+                surge_front_directed(sim.particles(), Real(cfg.dx), 0, false, Real(2 * cfg.dx)) /
+                a);
             Zs_bulk.push_back(surge_front(sim.particles(), cfg.dx) / a);
             next_sample += 0.005;
         }

@@ -97,10 +97,10 @@ extern template std::vector<std::size_t> bulk_fluid<2>(const Particles<2>&, Real
 extern template std::vector<std::size_t> bulk_fluid<3>(const Particles<3>&, Real);
 extern template Real water_level<2>(const Particles<2>&, Real, Real);
 extern template Real water_level<3>(const Particles<3>&, Real, Real);
-extern template Real water_level_at<2>(const Particles<2>&, const std::vector<std::size_t>&,
-                                      Real, Real, Real);
-extern template Real water_level_at<3>(const Particles<3>&, const std::vector<std::size_t>&,
-                                      Real, Real, Real);
+extern template Real water_level_at<2>(const Particles<2>&, const std::vector<std::size_t>&, Real,
+                                       Real, Real);
+extern template Real water_level_at<3>(const Particles<3>&, const std::vector<std::size_t>&, Real,
+                                       Real, Real);
 extern template Real surge_front_directed<2>(const Particles<2>&, Real, int, bool, Real);
 extern template Real surge_front_directed<3>(const Particles<3>&, Real, int, bool, Real);
 extern template Real surge_front<2>(const Particles<2>&, Real);

@@ -31,17 +31,17 @@ namespace sluice {
 
 template <int D>
 struct WallLoadParams {
-    Real p_floor = 0;   // pressures in fluid-wall pairs are clipped below at this (momentum.hpp)
-    Real p_gauge = 0;   // subtracted from both pressures: loads relative to this pressure
-    Real mu = 0;        // laminar viscosity; acts on wall pairs when wall_viscous
+    Real p_floor = 0; // pressures in fluid-wall pairs are clipped below at this (momentum.hpp)
+    Real p_gauge = 0; // subtracted from both pressures: loads relative to this pressure
+    Real mu = 0;      // laminar viscosity; acts on wall pairs when wall_viscous
     bool wall_viscous = false;
-    Real alpha = 0;     // artificial viscosity; acts on wall pairs when wall_artificial
+    Real alpha = 0; // artificial viscosity; acts on wall pairs when wall_artificial
     bool wall_artificial = false;
-    Real c0 = 0;        // speed of sound (artificial viscosity, Riemann solver)
-    Real h = 0;         // smoothing length
-    bool riemann = false; // numerics.dissipation = "riemann": the pair pressure is P*
-    Real limiter = 3;     // the Riemann solver's eta
-    bool no_slip = true;  // how v_bc is recomputed: mirrored (no-slip) or copied mean velocity
+    Real c0 = 0;            // speed of sound (artificial viscosity, Riemann solver)
+    Real h = 0;             // smoothing length
+    bool riemann = false;   // numerics.dissipation = "riemann": the pair pressure is P*
+    Real limiter = 3;       // the Riemann solver's eta
+    bool no_slip = true;    // how v_bc is recomputed: mirrored (no-slip) or copied mean velocity
     bool adami_v_bc = true; // recompute v_bc from the fluid; false: read P.v_bc
 };
 
@@ -62,9 +62,8 @@ std::vector<std::size_t> wall_particles_in(const Particles<D>& P, const Vec<D>& 
 // The load on the wall particles `walls` (indices into P) from every fluid particle within
 // the kernel support. `kernel` is an AnyKernel<D> (or any kernel of kernels.hpp).
 template <int D>
-WallLoad wall_load(const Particles<D>& P, const AnyKernel<D>& kernel,
-                   const WallLoadParams<D>& prm, const std::vector<std::size_t>& walls,
-                   const Vec<D>& moment_point);
+WallLoad wall_load(const Particles<D>& P, const AnyKernel<D>& kernel, const WallLoadParams<D>& prm,
+                   const std::vector<std::size_t>& walls, const Vec<D>& moment_point);
 
 // Area-averaged wall pressure: what a flush-mounted transducer of diameter `diameter` reads.
 // The sensor face is the disc (3-D) or segment (2-D) of that diameter centred on `centre` in
