@@ -10,16 +10,31 @@
 
 namespace sluice {
 
-std::string probe_csv_header(ProbeType type) {
-    switch (type) {
+std::string probe_csv_header(const ProbeConfig& probe, int dimension) {
+    switch (probe.type) {
     case ProbeType::pressure:
         return "time_s,pressure_Pa";
     case ProbeType::water_level:
         return "time_s,water_level_m";
     case ProbeType::surge_front:
-        return "time_s,front_x_m";
+        return fmt::format("time_s,front_{}_m", "xyz"[probe.direction_axis]);
+    case ProbeType::force: {
+        std::string h = "time_s,Fx_N,Fy_N";
+        if (dimension == 3)
+            h += ",Fz_N";
+        if (probe.moment_about)
+            h += dimension == 3 ? ",Mx_Nm,My_Nm,Mz_Nm" : ",Mz_Nm";
+        return h;
+    }
     }
     return "time_s,value";
+}
+
+std::size_t probe_columns(const ProbeConfig& probe, int dimension) {
+    if (probe.type != ProbeType::force)
+        return 1;
+    const auto d = static_cast<std::size_t>(dimension);
+    return d + (probe.moment_about ? (d == 3 ? 3 : 1) : 0);
 }
 
 namespace {
@@ -30,7 +45,8 @@ std::string probe_path(const std::string& out_dir, const ProbeConfig& probe) {
 
 } // namespace
 
-ProbeWriter::ProbeWriter(const std::string& out_dir, const std::vector<ProbeConfig>& probes) {
+ProbeWriter::ProbeWriter(const std::string& out_dir, const std::vector<ProbeConfig>& probes,
+                         int dimension) {
     if (!probes.empty())
         std::filesystem::create_directories(std::filesystem::path(out_dir) / "probes");
     for (const auto& probe : probes) {
@@ -42,7 +58,7 @@ ProbeWriter::ProbeWriter(const std::string& out_dir, const std::vector<ProbeConf
         files_.emplace_back(f);
         paths_.push_back(path);
         bytes_.push_back(0);
-        append(files_.size() - 1, probe_csv_header(probe.type) + "\n");
+        append(files_.size() - 1, probe_csv_header(probe, dimension) + "\n");
     }
 }
 
@@ -82,6 +98,13 @@ void ProbeWriter::append(std::size_t index, const std::string& text) {
 void ProbeWriter::write(std::size_t index, double time, double value) {
     // fmt's "{}" is the shortest exact round-trip representation of a double.
     append(index, fmt::format("{},{}\n", time, value));
+}
+
+void ProbeWriter::write(std::size_t index, double time, const std::vector<double>& values) {
+    std::string row = fmt::format("{}", time);
+    for (double v : values)
+        row += fmt::format(",{}", v);
+    append(index, row + "\n");
 }
 
 } // namespace sluice

@@ -200,6 +200,55 @@ Real surge_front(const Particles<D>& ps, Real dx) {
     return surge_front(ps, bulk_fluid(ps, dx), dx);
 }
 
+template <int D>
+Real water_level_at(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx, Real x,
+                    Real y) {
+    bool wet = false;
+    Real top = -std::numeric_limits<Real>::infinity();
+    for (std::size_t i : bulk) {
+        if (std::abs(ps.x[i][0] - x) > dx || (D == 3 && std::abs(ps.x[i][1] - y) > dx))
+            continue;
+        top = std::max(top, ps.x[i][D - 1]);
+        wet = true;
+    }
+    return wet ? top + dx / 2 : std::numeric_limits<Real>::quiet_NaN();
+}
+
+template <int D>
+Real surge_front_directed(const Particles<D>& ps, Real dx, int axis, bool negative,
+                          Real min_thickness) {
+    const int depth = axis == D - 1 ? 0 : D - 1;
+    const long needed = std::max(1L, std::lround(min_thickness / dx));
+    const Real sign = negative ? Real(-1) : Real(1);
+    // Column key: the cell along every axis but `depth`.
+    std::unordered_map<CellKey<D>, std::pair<long, Real>, CellHash<D>> columns;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+        if (ps.kind[i] != Kind::fluid)
+            continue;
+        CellKey<D> key;
+        if (!cell_of<D>(ps.x[i], 1 / dx, key))
+            continue;
+        key[static_cast<std::size_t>(depth)] = 0;
+        const Real s = sign * ps.x[i][axis];
+        auto [it, added] = columns.try_emplace(key, 0L, -std::numeric_limits<Real>::infinity());
+        ++it->second.first;
+        it->second.second = std::max(it->second.second, s);
+    }
+    Real front = -std::numeric_limits<Real>::infinity();
+    for (const auto& [key, c] : columns)
+        if (c.first >= needed)
+            front = std::max(front, c.second);
+    if (front == -std::numeric_limits<Real>::infinity())
+        return std::numeric_limits<Real>::quiet_NaN();
+    return sign * (front + dx / 2);
+}
+
+template Real water_level_at<2>(const Particles<2>&, const std::vector<std::size_t>&, Real, Real,
+                                Real);
+template Real water_level_at<3>(const Particles<3>&, const std::vector<std::size_t>&, Real, Real,
+                                Real);
+template Real surge_front_directed<2>(const Particles<2>&, Real, int, bool, Real);
+template Real surge_front_directed<3>(const Particles<3>&, Real, int, bool, Real);
 template std::vector<std::size_t> bulk_fluid<2>(const Particles<2>&, Real);
 template std::vector<std::size_t> bulk_fluid<3>(const Particles<3>&, Real);
 template Real water_level<2>(const Particles<2>&, Real, Real);

@@ -113,6 +113,18 @@ expect_refused projection_collision "projection.fluid_collision" \
 cp valid.toml override.toml
 expect_refused override "numerics.kernal" --set numerics.kernal=quintic
 
+# Issue 19's instruments: `sluice run` refuses them before writing anything.
+walls='[walls]\nmodel = "dummy"\ntank_lo = [0, 0]\ntank_hi = [1.5, 1]\ntank_faces = ["x-", "x+", "y-"]\n'
+probe() { printf "$walls\n[[probes]]\nname = \"p\"\n%b\n" "$1" | cat valid.toml - >"$2.toml"; }
+probe 'type = "force"\nface = "x+"\nhi = [1.0, 1.0]' force_off_wall
+expect_refused force_off_wall "probes\[0\].hi"
+probe 'type = "pressure"\nposition = [0.7, 0.3]\ndiameter = 0.02' sensor_off_wall
+expect_refused sensor_off_wall "probes\[0\].position"
+probe 'type = "pressure"\nposition = [1.5, 0.3]\ndiameter = -0.02' sensor_negative
+expect_refused sensor_negative "probes\[0\].diameter"
+probe 'type = "water_level"\nx = 1.8' gauge_outside_tank
+expect_refused gauge_outside_tank "probes\[0\].x"
+
 # A missing file is a case error too.
 "$exe" run missing.toml >/dev/null 2>err.txt
 rc=$?

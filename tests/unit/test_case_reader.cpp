@@ -522,3 +522,79 @@ end_time = 0.5
               .blocks[0]
               .shape == BlockShape::ellipse);
 }
+
+TEST_CASE("issue 19 instruments: force, area sensor, every_step, directed front") {
+    const std::string probes = R"(
+[[probes]]
+name = "front"
+type = "surge_front"
+direction = "-x"
+min_thickness = 0.05
+interval = "every_step"
+
+[[probes]]
+name = "force_right"
+type = "force"
+face = "x+"
+lo = [0, 0.5]
+moment_about = [4, 0]
+
+[[probes]]
+name = "sensor"
+type = "pressure"
+position = [3.99, 0.3]
+diameter = 0.02
+
+[[probes]]
+name = "floor_sensor"
+type = "pressure"
+position = [0.5, 0.0]
+diameter = 0.05
+face = "y-"
+interval = 0.01
+)";
+    const std::string text = edit("[[probes]]\nname = \"front\"\ntype = \"surge_front\"\n", probes);
+    const CaseConfig c = read_case(write_case("instruments", text));
+    REQUIRE(c.probes.size() == 6);
+    const auto& front = c.probes[2];
+    CHECK(front.every_step);
+    CHECK(front.direction_axis == 0);
+    CHECK(front.direction_negative);
+    CHECK(front.min_thickness == doctest::Approx(0.05));
+    CHECK(c.probes[0].min_thickness == 0); // not a front
+    const auto& force = c.probes[3];
+    CHECK(force.type == ProbeType::force);
+    CHECK(force.wall.face_axis == 0);
+    CHECK(force.wall.face_high);
+    CHECK(force.wall.box == -1);
+    REQUIRE(force.lo);
+    CHECK((*force.lo)[1] == doctest::Approx(0.5));
+    CHECK_FALSE(force.hi);
+    REQUIRE(force.moment_about);
+    CHECK((*force.moment_about)[0] == doctest::Approx(4));
+    // The sensor's wall is found from its centre: the x+ face at x = 4 (0.01 m away).
+    const auto& sensor = c.probes[4];
+    CHECK(sensor.diameter == doctest::Approx(0.02));
+    CHECK(sensor.sensor_axis == 0);
+    CHECK(sensor.sensor_surface == doctest::Approx(4));
+    CHECK(c.probes[5].sensor_axis == 1);
+    CHECK(c.probes[5].sensor_surface == doctest::Approx(0));
+    CHECK_FALSE(c.probes[5].every_step);
+
+    // Refusals, each naming its key.
+    const auto bad = [&](const std::string& from, const std::string& to, const std::string& key) {
+        return expect_error(edit(from, to, text), key);
+    };
+    CHECK(contains(bad("diameter = 0.02", "diameter = 0", "probes[4].diameter"), "> 0"));
+    CHECK(contains(bad("position = [3.99, 0.3]", "position = [3.9, 0.3]", "probes[4].position"),
+                   "off every wall"));
+    CHECK(contains(bad("lo = [0, 0.5]", "lo = [0, 3.5]", "probes[3].lo"), "touches no wall"));
+    bad("face = \"x+\"", "face = \"y+\"", "probes[3].face");
+    bad("face = \"x+\"", "box = 0", "probes[3].box");
+    bad("direction = \"-x\"", "direction = \"x\"", "probes[2].direction");
+    bad("interval = \"every_step\"", "interval = \"every step\"", "probes[2].interval");
+    bad("type = \"force\"", "type = \"water_level\"", "probes[3].face");
+    bad("x = 0.5", "x = 0.5\ny = 1", "probes[1].y");
+    // The projection scheme has no pair forces to sum.
+    bad("cfl = 0.2", "cfl = 0.2\nscheme = \"projection\"", "probes[3].type");
+}

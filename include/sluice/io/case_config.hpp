@@ -39,7 +39,7 @@ enum class VelocityProfile { uniform, taylor_green, rotating, strain };
 // Which lattice points of a block's box are filled: all of them, or those inside the ellipse
 // (ellipsoid in 3-D) inscribed in the box.
 enum class BlockShape { box, ellipse };
-enum class ProbeType { pressure, water_level, surge_front };
+enum class ProbeType { pressure, water_level, surge_front, force };
 
 struct FluidBlock {
     Triple lo{}, hi{}; // [m] axis-aligned box filled on a lattice of spacing dx
@@ -63,12 +63,32 @@ struct WallBox {
     Triple lo{}, hi{}; // [m] lattice sites of spacing dx centred in the box
 };
 
+// A wall surface a probe refers to: a tank face or an obstacle box (or one face of it).
+struct ProbeWall {
+    int face_axis = -1;     // tank face "x+" etc.: axis (0, 1, 2); -1 = none
+    bool face_high = false; // the "+" face
+    int box = -1;           // walls.boxes index; -1 = none
+};
+
 struct ProbeConfig {
     std::string name; // file name stem: probes/<name>.csv
     ProbeType type = ProbeType::pressure;
-    Triple position{};   // pressure probe point [m]
-    double x = 0;        // water level: x position [m]
-    double interval = 0; // [s] sampling interval; 0 = every output interval
+    Triple position{};       // pressure probe point [m]; area sensor: its centre, on the wall
+    double x = 0;            // water level: x position [m]
+    std::optional<double> y; // water level, 3-D: y position of a point gauge [m]
+    double interval = 0;     // [s] sampling interval; 0 = every output interval
+    bool every_step = false; // interval = "every_step": after every time step
+    // force: the wall region (a tank face or a box), optionally cut to [lo, hi].
+    // pressure with a diameter: the wall the sensor sits on (given or found from position).
+    ProbeWall wall;
+    std::optional<Triple> lo, hi;       // force: part of the region [m]
+    std::optional<Triple> moment_about; // force: moment about this point [m]
+    double diameter = 0;                // pressure: sensor diameter [m]; 0 = point probe
+    int sensor_axis = -1;               // pressure with a diameter: the wall's normal axis
+    double sensor_surface = 0;          // ... and the surface's coordinate on it [m]
+    int direction_axis = 0;             // surge front: axis of "+x", "-y", ...
+    bool direction_negative = false;    // ... and its sign
+    double min_thickness = 0;           // surge front [m]; 0 = 2 dx
 };
 
 // Which neighbours an operator uses (issue 5; Randles & Libersky 2000 as in seed 003).

@@ -66,17 +66,43 @@ Real water_level(const Particles<D>& ps, Real dx, Real x);
 template <int D>
 Real water_level(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx, Real x);
 
-// Surge front: the largest x over the bulk fluid, plus dx/2 (the cell edge, as above).
-// NaN when there is no fluid.
+// Water level at a point of the floor in 3-D: as above over the column |x_i - x| <= dx,
+// |y_i - y| <= dx (a gauge of half-width dx around (x, y), not the whole tank width).
+template <int D>
+Real water_level_at(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx, Real x,
+                    Real y);
+
+// Surge front (the original definition, kept for code that asks for it): the largest x over
+// the bulk fluid, plus dx/2 (the cell edge, as above). NaN when there is no fluid.
 template <int D>
 Real surge_front(const Particles<D>& ps, Real dx);
 template <int D>
 Real surge_front(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx);
 
+// Surge front along a direction (axis `axis`, towards + or -), defined by a minimum fluid
+// thickness so that it does not jump back when the tip thins or detaches from the bulk.
+// Fluid particles (all of them, not only the bulk) are binned into columns: cells of size dx
+// along every axis except the "depth" axis (the vertical one, or, for a vertical direction,
+// the first horizontal one), which a column spans whole. A column is *thick* when it holds at
+// least max(1, round(min_thickness / dx)) particles, i.e. min_thickness of fluid depth at
+// that point. The front is the furthest position along the direction of a particle in a
+// thick column, plus dx/2 (minus, for a negative direction): the reported value is a
+// coordinate on `axis`. A single droplet or a one-particle film is not a front; a thin tip
+// two particles deep still is, wherever it is. NaN when no column is thick.
+template <int D>
+Real surge_front_directed(const Particles<D>& ps, Real dx, int axis, bool negative,
+                          Real min_thickness);
+
 extern template std::vector<std::size_t> bulk_fluid<2>(const Particles<2>&, Real);
 extern template std::vector<std::size_t> bulk_fluid<3>(const Particles<3>&, Real);
 extern template Real water_level<2>(const Particles<2>&, Real, Real);
 extern template Real water_level<3>(const Particles<3>&, Real, Real);
+extern template Real water_level_at<2>(const Particles<2>&, const std::vector<std::size_t>&, Real,
+                                       Real, Real);
+extern template Real water_level_at<3>(const Particles<3>&, const std::vector<std::size_t>&, Real,
+                                       Real, Real);
+extern template Real surge_front_directed<2>(const Particles<2>&, Real, int, bool, Real);
+extern template Real surge_front_directed<3>(const Particles<3>&, Real, int, bool, Real);
 extern template Real surge_front<2>(const Particles<2>&, Real);
 extern template Real surge_front<3>(const Particles<3>&, Real);
 extern template Real water_level<2>(const Particles<2>&, const std::vector<std::size_t>&, Real,

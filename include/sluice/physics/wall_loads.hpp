@@ -1,0 +1,113 @@
+#pragma once
+// Loads on walls and wall-mounted pressure sensors: what the fluid exerts on a group of dummy
+// wall particles (a tank face, an obstacle, a part of either), and the pressure a transducer
+// of finite size on a wall surface reads. Pure functions over all particles, with their own
+// cell hash (O(N) per call): they run only at probe times and leave the step's loops alone.
+//
+// Force. Every fluid-wall pair (i fluid, j wall) of the momentum equation (momentum.hpp,
+// riemann.hpp) accelerates i by a_ij; the wall particle j receives -m_i a_ij (Newton's third
+// law), so the force on a set of wall particles is
+//   F = sum_{j in set} sum_{i fluid} m_i m_j s_ij grad_i W_ij,
+//   s_ij = (max(p_i, p_floor) - p_gauge)/rho_i^2 + (max(p_j, p_floor) - p_gauge)/rho_j^2
+// (riemann: s_ij = 2 (P*_ij - p_gauge)/(rho_i rho_j)), plus the negated viscous pair terms
+// where the scheme puts them on wall pairs (Morris laminar term on no-slip walls, artificial
+// viscosity when numerics.wall_artificial_viscosity is on). With p_gauge = 0 the sum of F
+// over all wall particles is exactly minus the wall part of sum_i m_i a_i. p_gauge removes
+// the background pressure: a uniform p_gauge alone would load a face by p_gauge times its
+// area (balanced by the opposite face), which is not a load the fluid's motion causes.
+// Dummy-wall pressures, densities and masses are the ones the last step computed (Adami
+// extrapolation); the boundary velocity v_bc of the viscous terms is recomputed the same way
+// (it is not part of the gathered state) unless `adami_v_bc` is false.
+#include "sluice/core/particles.hpp"
+#include "sluice/physics/eos.hpp"
+#include "sluice/physics/kernels.hpp"
+#include "sluice/physics/riemann.hpp"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace sluice {
+
+template <int D>
+struct WallLoadParams {
+    Real p_floor = 0; // pressures in fluid-wall pairs are clipped below at this (momentum.hpp)
+    Real p_gauge = 0; // subtracted from both pressures: loads relative to this pressure
+    Real mu = 0;      // laminar viscosity; acts on wall pairs when wall_viscous
+    bool wall_viscous = false;
+    Real alpha = 0; // artificial viscosity; acts on wall pairs when wall_artificial
+    bool wall_artificial = false;
+    Real c0 = 0;            // speed of sound (artificial viscosity, Riemann solver)
+    Real h = 0;             // smoothing length
+    bool riemann = false;   // numerics.dissipation = "riemann": the pair pressure is P*
+    Real limiter = 3;       // the Riemann solver's eta
+    bool no_slip = true;    // how v_bc is recomputed: mirrored (no-slip) or copied mean velocity
+    bool adami_v_bc = true; // recompute v_bc from the fluid; false: read P.v_bc
+};
+
+// Force [N in 3-D; N/m in 2-D, per metre of width] and moment about a point [N m; 2-D: N m/m,
+// only the z component] on a set of wall particles; the sums are in double.
+struct WallLoad {
+    std::array<double, 3> force{};
+    std::array<double, 3> moment{};
+    std::size_t wall_particles = 0; // in the set
+    std::size_t pairs = 0;          // fluid-wall pairs that contributed
+};
+
+// Indices (ascending) of the wall particles inside the closed box [lo, hi].
+template <int D>
+std::vector<std::size_t> wall_particles_in(const Particles<D>& P, const Vec<D>& lo,
+                                           const Vec<D>& hi);
+
+// The load on the wall particles `walls` (indices into P) from every fluid particle within
+// the kernel support. `kernel` is an AnyKernel<D> (or any kernel of kernels.hpp).
+template <int D>
+WallLoad wall_load(const Particles<D>& P, const AnyKernel<D>& kernel, const WallLoadParams<D>& prm,
+                   const std::vector<std::size_t>& walls, const Vec<D>& moment_point);
+
+// Area-averaged wall pressure: what a flush-mounted transducer of diameter `diameter` reads.
+// The sensor face is the disc (3-D) or segment (2-D) of that diameter centred on `centre` in
+// the wall surface whose normal is axis `normal_axis`. It is sampled on a lattice of spacing
+// at most `spacing` (cells of the lattice clipped to the disc, their centres as sample
+// points; at least the centre), and each sample point's pressure is the Shepard
+// interpolation over fluid AND wall particles
+//   p(y) = sum_j p_j W_j V_j / sum_j W_j V_j,   V_j = m_j / rho_j.
+// On the surface the kernel reaches as far into the wall as into the fluid; the dummy wall
+// particles carry the fluid pressure extrapolated through the wall with the hydrostatic
+// gradient (Adami et al. 2012), so the sum is centred on the surface and has no one-sided
+// bias (a fluid-only Shepard sum there would read the mean pressure about one smoothing
+// length inside the fluid: rho g h too low on a floor). The reading is the mean of the
+// sample points (equal area weights). NaN when no sample point has a fluid particle within
+// the support (a dry sensor).
+template <int D>
+Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel, const Vec<D>& centre,
+                          int normal_axis, Real diameter, Real spacing);
+
+// The Adami state of every dummy wall particle (pressure, density, mass = rho_w wall_volume)
+// from the fluid around it, as the step's walls stage computes it (walls.hpp,
+// dummy_wall_state). The run calls it on its copy of the initial state, whose wall particles
+// have not been through a step yet (their pressure would read as the background's).
+template <int D>
+void refresh_dummy_walls(Particles<D>& P, const AnyKernel<D>& kernel, const Eos& eos,
+                         const Vec<D>& gravity, Real wall_volume);
+
+extern template void refresh_dummy_walls<2>(Particles<2>&, const AnyKernel<2>&, const Eos&,
+                                            const Vec<2>&, Real);
+extern template void refresh_dummy_walls<3>(Particles<3>&, const AnyKernel<3>&, const Eos&,
+                                            const Vec<3>&, Real);
+extern template std::vector<std::size_t> wall_particles_in<2>(const Particles<2>&, const Vec<2>&,
+                                                              const Vec<2>&);
+extern template std::vector<std::size_t> wall_particles_in<3>(const Particles<3>&, const Vec<3>&,
+                                                              const Vec<3>&);
+extern template WallLoad wall_load<2>(const Particles<2>&, const AnyKernel<2>&,
+                                      const WallLoadParams<2>&, const std::vector<std::size_t>&,
+                                      const Vec<2>&);
+extern template WallLoad wall_load<3>(const Particles<3>&, const AnyKernel<3>&,
+                                      const WallLoadParams<3>&, const std::vector<std::size_t>&,
+                                      const Vec<3>&);
+extern template Real wall_pressure_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
+                                             const Vec<2>&, int, Real, Real);
+extern template Real wall_pressure_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
+                                             const Vec<3>&, int, Real, Real);
+
+} // namespace sluice

@@ -1,0 +1,291 @@
+// Wall loads and area pressure sensors (wall_loads.hpp): a cell hash of the fluid, then the
+// fluid-wall pair terms of the momentum equation summed per wall particle.
+#include "sluice/physics/wall_loads.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <variant>
+
+namespace sluice {
+namespace {
+
+template <int D>
+using Key = std::array<std::int64_t, D>;
+
+template <int D>
+struct KeyHash {
+    std::size_t operator()(const Key<D>& k) const {
+        std::uint64_t h = 1469598103934665603ULL;
+        for (auto c : k)
+            h = (h ^ static_cast<std::uint64_t>(c)) * 1099511628211ULL;
+        return static_cast<std::size_t>(h);
+    }
+};
+
+// Cell of a position; false for positions no cell can hold (NaN, or absurdly far).
+template <int D>
+bool key_of(const Vec<D>& x, Real inv, Key<D>& out) {
+    for (int a = 0; a < D; ++a) {
+        const Real c = std::floor(x[a] * inv);
+        if (!(std::abs(c) < 1e15))
+            return false;
+        out[static_cast<std::size_t>(a)] = static_cast<std::int64_t>(c);
+    }
+    return true;
+}
+
+// Fluid particles bucketed by cells of edge `size` (ascending index within a cell).
+template <int D>
+struct FluidCells {
+    Real inv;
+    std::unordered_map<Key<D>, std::vector<std::size_t>, KeyHash<D>> cells;
+
+    FluidCells(const Particles<D>& P, Real size) : inv(1 / size) {
+        for (std::size_t i = 0; i < P.size(); ++i) {
+            Key<D> k;
+            if (P.kind[i] == Kind::fluid && key_of<D>(P.x[i], inv, k))
+                cells[k].push_back(i);
+        }
+    }
+    // Calls f(i) for every fluid particle of the 3^D cells around x, in a fixed order.
+    template <class F>
+    void around(const Vec<D>& x, F&& f) const {
+        Key<D> k;
+        if (!key_of<D>(x, inv, k))
+            return;
+        const int total = D == 2 ? 9 : 27;
+        for (int code = 0; code < total; ++code) {
+            Key<D> n = k;
+            int rest = code;
+            for (std::size_t a = 0; a < static_cast<std::size_t>(D); ++a) {
+                n[a] += rest % 3 - 1;
+                rest /= 3;
+            }
+            const auto it = cells.find(n);
+            if (it == cells.end())
+                continue;
+            for (std::size_t i : it->second)
+                f(i);
+        }
+    }
+};
+
+template <int D, class K>
+WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<D>& prm,
+                   const std::vector<std::size_t>& walls, const Vec<D>& c) {
+    WallLoad out;
+    out.wall_particles = walls.size();
+    const Real support = kernel.support();
+    const Real support2 = support * support;
+    const FluidCells<D> fluid(P, support);
+    const Real eta2 = Real(0.01) * prm.h * prm.h;
+    const Real two_mu = 2 * prm.mu;
+    const Real av = prm.alpha * prm.h * prm.c0;
+    const bool laminar = two_mu > 0 && prm.wall_viscous;
+    const bool artificial = !prm.riemann && av > 0 && prm.wall_artificial;
+    for (std::size_t j : walls) {
+        const Vec<D> xj = P.x[j];
+        // The boundary velocity of the viscous terms (walls.hpp, dummy_wall_state).
+        Vec<D> v_bc = P.v_bc[j];
+        if ((laminar || artificial) && prm.adami_v_bc) {
+            Real sum_w = 0;
+            Vec<D> sum_v = Vec<D>::Zero();
+            fluid.around(xj, [&](std::size_t i) {
+                const Real r2 = (P.x[i] - xj).squaredNorm();
+                if (r2 >= support2)
+                    return;
+                const Real W = kernel.W(std::sqrt(r2));
+                sum_w += W;
+                sum_v += W * P.v[i];
+            });
+            v_bc = sum_w > 0 ? Vec<D>((prm.no_slip ? -1 : 1) * sum_v / sum_w) : Vec<D>::Zero();
+        }
+        const Real rho_j = P.rho[j];
+        const Real pj = std::max(P.p[j], prm.p_floor);
+        const Real m_j = P.mass[j];
+        Eigen::Matrix<double, D, 1> f = Eigen::Matrix<double, D, 1>::Zero();
+        fluid.around(xj, [&](std::size_t i) {
+            const Vec<D> dx = P.x[i] - xj; // x_i - x_j, as in the momentum loop
+            const Real r2 = dx.squaredNorm();
+            if (r2 >= support2 || r2 <= 0)
+                return;
+            const Real dWr = grad_factor(kernel, r2);
+            const Real rho_i = P.rho[i];
+            const Real pi = std::max(P.p[i], prm.p_floor);
+            const Vec<D>& v_i = P.v[i];
+            Real s;
+            if (prm.riemann) {
+                const Real r = std::sqrt(r2);
+                const Real du = -2 * v_i.dot(dx) / r;
+                const Real p_star = riemann_pressure(rho_i, rho_j, pi, pj, du, prm.c0, prm.limiter);
+                s = 2 * (p_star - prm.p_gauge) / (rho_i * rho_j);
+            } else {
+                s = (pi - prm.p_gauge) / (rho_i * rho_i) + (pj - prm.p_gauge) / (rho_j * rho_j);
+            }
+            const Vec<D> v_ij = v_i - v_bc;
+            if (artificial) {
+                const Real vr = std::min(v_ij.dot(dx), Real(0));
+                s -= av * vr / ((r2 + eta2) * (Real(0.5) * (rho_i + rho_j)));
+            }
+            // a_ij of fluid i (per unit m_j), then the wall's share -m_i a_ij.
+            Vec<D> a_ij = -s * dWr * dx;
+            if (laminar)
+                a_ij += two_mu / (rho_i * rho_j) * (dWr * r2 / (r2 + eta2)) * v_ij;
+            f -= (double(P.mass[i]) * double(m_j)) * a_ij.template cast<double>();
+            ++out.pairs;
+        });
+        const Eigen::Matrix<double, D, 1> r = (xj - c).template cast<double>();
+        for (int a = 0; a < D; ++a)
+            out.force[static_cast<std::size_t>(a)] += f[a];
+        if constexpr (D == 2) {
+            out.moment[2] += r[0] * f[1] - r[1] * f[0];
+        } else {
+            out.moment[0] += r[1] * f[2] - r[2] * f[1];
+            out.moment[1] += r[2] * f[0] - r[0] * f[2];
+            out.moment[2] += r[0] * f[1] - r[1] * f[0];
+        }
+    }
+    return out;
+}
+
+template <int D, class K>
+Real sensor_with(const Particles<D>& P, const K& kernel, const Vec<D>& centre, int axis,
+                 Real diameter, Real spacing) {
+    const Real support = kernel.support();
+    const Real support2 = support * support;
+    const Real radius = diameter / 2;
+    // The particles that can reach any sample point.
+    std::vector<std::size_t> near;
+    const Real reach2 = (radius + support) * (radius + support);
+    for (std::size_t j = 0; j < P.size(); ++j)
+        if ((P.x[j] - centre).squaredNorm() < reach2)
+            near.push_back(j);
+    // Sample points: centres of the n^(D-1) cells of a lattice of spacing <= `spacing` over the
+    // diameter's square, kept where inside the disc (every one in 2-D).
+    const int n = std::max(1, static_cast<int>(std::ceil(diameter / spacing - Real(1e-9))));
+    const Real step = diameter / Real(n);
+    std::array<int, 2> tangent{};
+    for (int a = 0, k = 0; a < D; ++a)
+        if (a != axis)
+            tangent[static_cast<std::size_t>(k++)] = a;
+    const int n2 = D == 3 ? n : 1;
+    double sum = 0;
+    int points = 0, wet = 0;
+    for (int u = 0; u < n; ++u)
+        for (int w = 0; w < n2; ++w) {
+            Vec<D> y = centre;
+            const Real du = (Real(u) + Real(0.5)) * step - radius;
+            y[tangent[0]] += du;
+            Real r2t = du * du;
+            if constexpr (D == 3) {
+                const Real dw = (Real(w) + Real(0.5)) * step - radius;
+                y[tangent[1]] += dw;
+                r2t += dw * dw;
+            }
+            if (D == 3 && n > 1 && r2t > radius * radius)
+                continue;
+            Real num = 0, den = 0;
+            bool fluid = false;
+            for (std::size_t j : near) {
+                const Real r2 = (P.x[j] - y).squaredNorm();
+                if (r2 >= support2)
+                    continue;
+                const Real wv = kernel.W(std::sqrt(r2)) * P.mass[j] / P.rho[j];
+                num += P.p[j] * wv;
+                den += wv;
+                fluid = fluid || P.kind[j] == Kind::fluid;
+            }
+            ++points;
+            if (den > 0)
+                sum += double(num / den);
+            wet += fluid ? 1 : 0;
+        }
+    if (wet == 0 || points == 0)
+        return std::numeric_limits<Real>::quiet_NaN();
+    return Real(sum / points);
+}
+
+} // namespace
+
+template <int D>
+void refresh_dummy_walls(Particles<D>& P, const AnyKernel<D>& kernel, const Eos& eos,
+                         const Vec<D>& gravity, Real wall_volume) {
+    std::visit(
+        [&](const auto& k) {
+            const Real support = k.support();
+            const FluidCells<D> fluid(P, support);
+            for (std::size_t w = 0; w < P.size(); ++w) {
+                if (P.kind[w] != Kind::wall)
+                    continue;
+                Real sum_w = 0, sum_pw = 0;
+                Vec<D> sum_rho_r = Vec<D>::Zero();
+                fluid.around(P.x[w], [&](std::size_t f) {
+                    const Vec<D> dx = P.x[w] - P.x[f];
+                    const Real r2 = dx.squaredNorm();
+                    if (r2 >= support * support)
+                        return;
+                    const Real W = k.W(std::sqrt(r2));
+                    sum_w += W;
+                    sum_pw += P.p[f] * W;
+                    sum_rho_r += P.rho[f] * W * dx;
+                });
+                P.p[w] = sum_w > 0 ? (sum_pw + gravity.dot(sum_rho_r)) / sum_w : eos.p_background;
+                P.rho[w] = eos.density(P.p[w]);
+                P.mass[w] = P.rho[w] * wall_volume;
+            }
+        },
+        kernel);
+}
+
+template <int D>
+std::vector<std::size_t> wall_particles_in(const Particles<D>& P, const Vec<D>& lo,
+                                           const Vec<D>& hi) {
+    std::vector<std::size_t> out;
+    for (std::size_t j = 0; j < P.size(); ++j) {
+        if (P.kind[j] != Kind::wall)
+            continue;
+        bool in = true;
+        for (int a = 0; a < D; ++a)
+            in = in && P.x[j][a] >= lo[a] && P.x[j][a] <= hi[a];
+        if (in)
+            out.push_back(j);
+    }
+    return out;
+}
+
+template <int D>
+WallLoad wall_load(const Particles<D>& P, const AnyKernel<D>& kernel, const WallLoadParams<D>& prm,
+                   const std::vector<std::size_t>& walls, const Vec<D>& moment_point) {
+    return std::visit([&](const auto& k) { return load_with(P, k, prm, walls, moment_point); },
+                      kernel);
+}
+
+template <int D>
+Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel, const Vec<D>& centre,
+                          int normal_axis, Real diameter, Real spacing) {
+    return std::visit(
+        [&](const auto& k) { return sensor_with(P, k, centre, normal_axis, diameter, spacing); },
+        kernel);
+}
+
+template void refresh_dummy_walls<2>(Particles<2>&, const AnyKernel<2>&, const Eos&, const Vec<2>&,
+                                     Real);
+template void refresh_dummy_walls<3>(Particles<3>&, const AnyKernel<3>&, const Eos&, const Vec<3>&,
+                                     Real);
+template std::vector<std::size_t> wall_particles_in<2>(const Particles<2>&, const Vec<2>&,
+                                                       const Vec<2>&);
+template std::vector<std::size_t> wall_particles_in<3>(const Particles<3>&, const Vec<3>&,
+                                                       const Vec<3>&);
+template WallLoad wall_load<2>(const Particles<2>&, const AnyKernel<2>&, const WallLoadParams<2>&,
+                               const std::vector<std::size_t>&, const Vec<2>&);
+template WallLoad wall_load<3>(const Particles<3>&, const AnyKernel<3>&, const WallLoadParams<3>&,
+                               const std::vector<std::size_t>&, const Vec<3>&);
+template Real wall_pressure_sensor<2>(const Particles<2>&, const AnyKernel<2>&, const Vec<2>&, int,
+                                      Real, Real);
+template Real wall_pressure_sensor<3>(const Particles<3>&, const AnyKernel<3>&, const Vec<3>&, int,
+                                      Real, Real);
+
+} // namespace sluice
