@@ -118,9 +118,8 @@ WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<
             const Vec<D>& v_i = P.v[i];
             Real s;
             if (prm.riemann) {
-                const Real r = std::sqrt(r2);
-                const Real du = -2 * v_i.dot(dx) / r;
-                const Real p_star = riemann_pressure(rho_i, rho_j, pi, pj, du, prm.c0, prm.limiter);
+                // No dissipation in fluid-wall pairs (riemann_acceleration): dU = 0.
+                const Real p_star = riemann_pressure(rho_i, rho_j, pi, pj, 0, prm.c0, prm.limiter);
                 s = 2 * (p_star - prm.p_gauge) / (rho_i * rho_j);
             } else {
                 s = (pi - prm.p_gauge) / (rho_i * rho_i) + (pj - prm.p_gauge) / (rho_j * rho_j);

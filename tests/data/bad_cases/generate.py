@@ -154,6 +154,7 @@ CHOICES = {
     "output.fields": [["pressur"], "pressure", ["id", "id"]],
     "output.snapshots": ["yes", 1],
     "numerics.wall_artificial_viscosity": ["no", 0],
+    "numerics.dissipation": ["godunov", "", 1],
     "blocks[0].hydrostatic": ["no"],
     "blocks[0].profile": ["swirl"],
     # Names become folder/file names: nothing may escape results/<case>/.
