@@ -130,6 +130,29 @@ std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& in
                                        "(|g| = {:.4g} m/s^2, fluid column H = {:.4g} m): density "
                                        "will vary by more than ~1 % (inaccurate)",
                                        cfg.sound_speed, c_min, g_norm, H)});
+        const bool measures_loads =
+            std::any_of(cfg.probes.begin(), cfg.probes.end(), [](const ProbeConfig& p) {
+                return p.type == ProbeType::pressure || p.type == ProbeType::force;
+            });
+        // Water can only surge into a wall if some block leaves part of the tank's floor dry
+        // (a layer over the whole floor, as in a still tank, cannot collapse).
+        const Triple& box_lo = cfg.walls != WallModel::none ? cfg.tank_lo : cfg.domain_lo;
+        const Triple& box_hi = cfg.walls != WallModel::none ? cfg.tank_hi : cfg.domain_hi;
+        bool can_surge = false;
+        for (const auto& b : cfg.blocks)
+            for (std::size_t a = 0; a < dim; ++a)
+                if (std::abs(up[a]) < 1e-12 && !cfg.periodic[a] &&
+                    (b.lo[a] > box_lo[a] + 1e-9 || b.hi[a] < box_hi[a] - 1e-9))
+                    can_surge = true;
+        const double c_loads = min_mach_ratio_loads * std::sqrt(g_norm * H);
+        if (measures_loads && can_surge && cfg.sound_speed >= 0.995 * c_min &&
+            cfg.sound_speed < 0.995 * c_loads)
+            out.push_back({"fluid.sound_speed",
+                           fmt::format("c0 = {:.4g} m/s is below 20 sqrt(g H) = {:.4g} m/s and "
+                                       "the case measures pressure or force: impact loads are "
+                                       "not converged in c0 there (inaccurate; "
+                                       "docs/RECOMMENDED_PRACTICE.md)",
+                                       cfg.sound_speed, c_loads)});
     }
     return out;
 }

@@ -109,6 +109,27 @@ TEST_CASE("c0 below 10 sqrt(g H) is flagged; H runs from the tank floor to the t
     CHECK(find(p, "fluid.sound_speed") == nullptr);
 }
 
+TEST_CASE("a case that measures loads is flagged below 20 sqrt(g H)") {
+    // 20 sqrt(9.81 * 0.8) = 56.03 m/s; the case's c0 = 30 m/s passes the 10 sqrt(g H) rule.
+    const auto loads = [](const char* probe, const std::string& c0) {
+        const CaseConfig cfg =
+            read_case_text(std::string(kCase) + probe, "check.toml", {"fluid.sound_speed=" + c0});
+        return case_warnings(cfg, describe_case(cfg));
+    };
+    const char* pressure =
+        "[[probes]]\nname = \"p\"\ntype = \"pressure\"\nposition = [1.595, 0.02]\n";
+    const char* front = "[[probes]]\nname = \"f\"\ntype = \"surge_front\"\n";
+    const auto w = loads(pressure, "30");
+    REQUIRE(find(w, "fluid.sound_speed") != nullptr);
+    CHECK(contains(find(w, "fluid.sound_speed")->message, "20 sqrt(g H) = 56.03 m/s"));
+    CHECK(find(loads(pressure, "57"), "fluid.sound_speed") == nullptr);
+    CHECK(find(loads(front, "30"), "fluid.sound_speed") == nullptr); // fronts: 10 sqrt(g H) will do
+    // Water over the whole floor cannot surge into a wall (a still tank's pressure probe).
+    const CaseConfig layer = read_case_text(std::string(kCase) + pressure, "check.toml",
+                                            {"fluid.sound_speed=30", "blocks.0.hi=[1.6, 0.8]"});
+    CHECK(find(case_warnings(layer, describe_case(layer)), "fluid.sound_speed") == nullptr);
+}
+
 TEST_CASE("the solver's refusals are made from the configuration alone") {
     const CaseConfig ok = read_case_text(kCase, "check.toml");
     CHECK_NOTHROW(check_runnable(ok, describe_case(ok)));
