@@ -14,6 +14,8 @@ snapshots/*.h5), with the same definitions as the validation tests in tests/vali
                 sweep's resolutions KE carries an acoustic oscillation of up to 16 % of KE0
                 between snapshots 0.02 s apart, so an error at one time ranks runs by the
                 oscillation's phase, not by the decay.
+* impact        perf/impact/analyse.py:  relative deviation of the 1 ms filtered first-impact
+                peak at sensor P1 of the Zhou/Buchner dam break from the digitised experiment.
 * poiseuille    test_poiseuille_2d.cpp:  L2 relative error of the fluid x-velocity against the
                 Morris et al. (1997, eq. 21) start-up series at the final time.
 """
@@ -140,9 +142,28 @@ def poiseuille_profile(out_dir: Path, case: dict) -> float:
     return float(np.sqrt(np.sum((v[fluid, 0] - ua) ** 2) / np.sum(ua**2)))
 
 
+def impact_pressure(out_dir: Path, case: dict) -> float:
+    """Relative deviation of the 1 ms filtered first-impact peak at sensor P1 (0.16 m on the
+    downstream wall of the Zhou/Buchner dam break) from the experiment's, with the definitions
+    of perf/impact/analyse.py (contact at 0.05 rho g H, window 0.5 t*)."""
+    import sys
+
+    sys.path.insert(0, str(ROOT / "perf" / "impact"))
+    import analyse  # noqa: E402 (numpy; the impact study's own definitions)
+
+    sc = analyse.Scales(H=case["blocks"][0]["hi"][1] - case["blocks"][0]["lo"][1],
+                        g=abs(case["fluid"]["gravity"][-1]), rho0=case["fluid"]["rho0"])
+    t, p = analyse.load_probe(out_dir / "probes" / "P1.csv")
+    sim = analyse.impact_metrics(t, p, sc)["peak_filt_star"]
+    exp = analyse.experiment_metrics(0.160, sc)[0]["peak_filt_star"]
+    return abs(sim - exp) / exp
+
+
 EVALUATORS = {
     "dam_break": (dam_break_front, "RMS relative front deviation from Martin & Moyce (T <= 3)"),
     "hydrostatic": (hydrostatic_pressure, "worst relative bottom-pressure error (t >= 1 s)"),
     "taylor_green": (taylor_green_decay, "relative error of the fitted KE decay rate"),
     "poiseuille": (poiseuille_profile, "L2 relative velocity-profile error at the end time"),
+    "impact": (impact_pressure,
+               "relative deviation of the 1 ms filtered first-impact peak at P1 (Buchner 2002)"),
 }

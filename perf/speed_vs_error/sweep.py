@@ -50,6 +50,12 @@ CASES = {
         "dx": {"quick": [0.05, 0.025], "full": [0.05, 0.025, 0.0125, 0.00625]},
         "end": {"quick": 1.0, "full": 1.0},
     },
+    "impact": {
+        "file": "perf/impact/zhou_2d.toml",
+        "fixed": {"output.snapshots": False},
+        "dx": {"quick": [0.02, 0.01], "full": [0.02, 0.01, 0.005]},
+        "end": {"quick": 0.85, "full": 0.85},  # first impact at P1: t* 2.5-3.0, t = 0.62-0.74 s
+    },
     "poiseuille": {
         "file": "cases/poiseuille_2d.toml",
         "fixed": {"time.output_interval": 0.0, "output.fields": ["position", "velocity", "kind"]},
@@ -68,6 +74,10 @@ def resolution_overrides(name: str, case: dict, dx: float) -> dict:
         h = case["domain"]["hi"][1]
         o.update({"domain.hi": [lx, h], "blocks.0.hi": [lx, case["blocks"][0]["hi"][1]],
                   "walls.tank_hi": [lx, case["walls"]["tank_hi"][1]]})
+    if name == "impact":
+        # Sensor P1 half a dx inside the fluid at every resolution.
+        x_wall = case["walls"]["tank_hi"][0]
+        o["probes.0.position"] = [x_wall - dx / 2, case["probes"][0]["position"][1]]
     return o
 
 
@@ -102,6 +112,12 @@ def variants(case: dict, quick: bool, projection: bool) -> list[tuple[str, dict]
     # The baseline from a lattice displaced by 1e-3 dx (particles.jitter): how much of the
     # error comes from the exact symmetry of the starting lattice.
     out.append(("jitter 1e-3", {"particles.jitter": 1e-3}))
+    if case.get("walls", {}).get("model") == "dummy":
+        # Issue 18's two wall options: artificial viscosity on wall pairs (the old default)
+        # and the Riemann solver.
+        out.append(("wall artificial viscosity", {"numerics.wall_artificial_viscosity": True}))
+        out.append(("riemann", {"numerics.dissipation": "riemann", "numerics.delta_sph": 0.0,
+                                "numerics.artificial_viscosity": 0.0}))
     if projection:
         out.append(("projection", {"numerics.scheme": "projection"}))
     return out
