@@ -17,7 +17,7 @@
 //             =  rho_i sum_j V_j F_ij [ (v_i - v_j) . dx + r dp/(rho_bar c0) ]        (fluid j)
 // (grad_i W_ij = F_ij dx, dx = x_i - x_j). The second term of the density rate is the
 // solver's density diffusion: no delta-SPH is needed. Its pressure jump dp is taken without
-// the hydrostatic part, dp = p_i - p_j + rho0 g . dx (as Fourtakas et al. 2019 do for
+// the hydrostatic part, dp = p_i - p_j - rho0 g . dx (as Fourtakas et al. 2019 do for
 // delta-SPH), so that water at rest stays at rest; Zhang et al. use p_i - p_j.
 //
 // Fixed dummy walls (Zhang et al. 2017, section 3.3): the right state of a fluid-wall pair
@@ -123,7 +123,8 @@ SLUICE_FLATTEN void riemann_continuity_rate(const Neighbourhood<D>& nb, const K&
                 const Real r = std::sqrt(r2);
                 const Real rho_j = P.rho[j];
                 const Real V_j = P.mass[j] / rho_j;
-                const Real dp = p_i - P.p[j] + prm.rho0 * prm.gravity.dot(dx);
+                // Hydrostatic part of p_i - p_j: rho0 g . (x_i - x_j) (grad p = rho0 g).
+                const Real dp = p_i - P.p[j] - prm.rho0 * prm.gravity.dot(dx);
                 const Real rho_bar = Real(0.5) * (rho_i + rho_j);
                 if (P.kind[j] == Kind::wall)
                     return 2 * V_j * Fij * (v_i.dot(dx) + r * dp / (2 * rho_bar * prm.c0));
