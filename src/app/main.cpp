@@ -76,6 +76,9 @@ void print_info(const sluice::CaseConfig& cfg, const sluice::CaseInfo& info) {
     fmt::print("physics\n");
     for (const auto& p : info.physics)
         fmt::print("  - {}\n", p);
+    fmt::print("geometry    as built (wall surface: its fluid-side layer -/+ dx/2)\n");
+    for (const auto& g : info.geometry)
+        fmt::print("  - {}\n", g);
 }
 
 // Adds the case file argument and --set, shared by `run` and `info`.

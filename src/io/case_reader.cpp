@@ -476,10 +476,11 @@ void read_walls(const Section& s, CaseConfig& c) {
                       fmt::format("the box lies outside the domain: {} = {} is above "
                                   "domain.hi = {}",
                                   kAxis[a], box.hi[a], c.domain_hi[a]));
-            // Like a block, the box holds round(extent / dx) lattice sites per axis.
-            b.require(std::round((box.hi[a] - box.lo[a]) / c.dx) >= 1, "hi",
-                      fmt::format("the box is {} m thick along {}, less than half of dx = {} m: "
-                                  "it would hold no particle",
+            // Its wall layers are laid from each face inwards, the first dx/2 inside: a box
+            // thinner than dx cannot hold one layer with its surface where the case puts it.
+            b.require(box.hi[a] - box.lo[a] >= c.dx * (1 - 1e-9), "hi",
+                      fmt::format("the box is {} m thick along {}, less than dx = {} m: it "
+                                  "cannot hold one layer of wall particles",
                                   box.hi[a] - box.lo[a], kAxis[a], c.dx));
         }
         // Tank wall layers lie outside the walled faces; a box reaching past one would put
@@ -531,6 +532,14 @@ void check_blocks_in_tank(const Section& root, const CaseConfig& c) {
                     fmt::format("blocks[{}].{}", i, low ? "lo" : "hi"),
                     fmt::format("the block extends beyond the tank wall \"{}\" at {} = {}", f,
                                 kAxis[a], low ? c.tank_lo[a] : c.tank_hi[a]));
+            // The lattice keeps its last particle centre dx/4 inside a walled upper face
+            // (block_lattice_count): a block that leaves no room for one is refused.
+            if (!low && std::floor((c.tank_hi[a] - b.lo[a]) / c.dx + 0.25 + 1e-9) < 1)
+                root.reader().fail(
+                    fmt::format("blocks[{}].hi", i),
+                    fmt::format("the block starts {} m from the tank wall \"{}\", less than "
+                                "3/4 dx = {} m: no particle fits on its lattice",
+                                c.tank_hi[a] - b.lo[a], f, 0.75 * c.dx));
         }
     }
 }

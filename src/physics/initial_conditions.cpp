@@ -7,6 +7,7 @@
 #include <numbers>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace sluice {
 
@@ -47,6 +48,67 @@ void for_each_lattice_site(const std::array<double, D>& lo, const std::array<int
         }
         f(std::as_const(k), std::as_const(x));
     }
+}
+
+// Calls f(k, x) for every site k of the product of the per-axis site lists, axis 0 fastest (the
+// order of for_each_lattice_site).
+template <int D, class F>
+void for_each_site(const std::array<std::vector<double>, D>& sites, F&& f) {
+    std::array<int, D> k{};
+    std::size_t total = 1;
+    for (int d = 0; d < D; ++d)
+        total *= sites[d].size();
+    for (std::size_t idx = 0; idx < total; ++idx) {
+        std::size_t r = idx;
+        Vec<D> x;
+        for (int d = 0; d < D; ++d) {
+            const std::size_t n = sites[d].size();
+            k[d] = static_cast<int>(r % n);
+            r /= n;
+            x[d] = Real(sites[d][static_cast<std::size_t>(k[d])]);
+        }
+        f(std::as_const(k), std::as_const(x));
+    }
+}
+
+// Wall sites along one axis of the span [a, b]: n_a layers a + (k + 1/2) dx laid from a, n_b
+// layers b - (k + 1/2) dx laid from b, and between the two stacks round((b - a)/dx) - n_a - n_b
+// sites of spacing dx centred between them. Where the stacks would overlap (b - a shorter than
+// n_a + n_b layers: `thin`), round((b - a)/dx) sites, at least one, centred in [a, b]. When dx
+// divides b - a (to 1e-9) the sites are a + (k + 1/2) dx, computed as the lattice of earlier
+// versions was, so such geometry stays bitwise identical.
+struct AxisSites {
+    std::vector<double> x;
+    int n_a = 0, mid = 0, n_b = 0; // sites in each part (thin: all in mid)
+    bool thin = false;
+};
+
+AxisSites axis_sites(double a, double b, int n_a, int n_b, double dx) {
+    const double q = (b - a) / dx;
+    const int n = std::max(1, static_cast<int>(std::round(q)));
+    AxisSites s;
+    s.x.reserve(static_cast<std::size_t>(n));
+    s.thin = q < n_a + n_b - 1e-9;
+    if (s.thin) {
+        s.mid = n;
+    } else {
+        s.n_a = n_a;
+        s.n_b = n_b;
+        s.mid = n - n_a - n_b;
+    }
+    if (std::abs(q - std::round(q)) < 1e-9) {
+        for (int k = 0; k < n; ++k)
+            s.x.push_back(a + (k + 0.5) * dx);
+        return s;
+    }
+    for (int k = 0; k < s.n_a; ++k)
+        s.x.push_back(a + (k + 0.5) * dx);
+    const double centre = s.thin ? 0.5 * (a + b) : 0.5 * ((a + n_a * dx) + (b - n_b * dx));
+    for (int k = 0; k < s.mid; ++k)
+        s.x.push_back(centre + (k - 0.5 * (s.mid - 1)) * dx);
+    for (int k = s.n_b - 1; k >= 0; --k)
+        s.x.push_back(b - (k + 0.5) * dx);
+    return s;
 }
 
 template <int D, class F>
@@ -102,7 +164,68 @@ bool in_box_shell(const std::array<int, D>& k, const std::array<int, D>& n, int 
     return false;
 }
 
+// The tank's wall sites along axis d: the walled faces' layers laid outwards from tank_lo and
+// tank_hi, the span between them covered as axis_sites does.
+AxisSites tank_axis_sites(const CaseConfig& cfg, int d, int layers) {
+    const bool lo_walled = face_walled(cfg, d, false), hi_walled = face_walled(cfg, d, true);
+    const double a = cfg.tank_lo[d] - (lo_walled ? layers * cfg.dx : 0.0);
+    const double b = cfg.tank_hi[d] + (hi_walled ? layers * cfg.dx : 0.0);
+    return axis_sites(a, b, lo_walled ? layers : 0, hi_walled ? layers : 0, cfg.dx);
+}
+
+// A box's sites along axis d: `layers` laid inwards from each face.
+AxisSites box_axis_sites(const WallBox& b, int d, int layers, double dx) {
+    return axis_sites(b.lo[d], b.hi[d], layers, layers, dx);
+}
+
+// Particles of block b (the lattice of add_fluid_blocks, the shape's test).
+std::size_t block_particles(const CaseConfig& cfg, const FluidBlock& b) {
+    std::array<double, 3> lo{};
+    std::array<int, 3> n{1, 1, 1};
+    std::size_t all = 1;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(cfg.dimension); ++d) {
+        lo[d] = b.lo[d];
+        n[d] = block_lattice_count(cfg, b, static_cast<int>(d));
+        all *= static_cast<std::size_t>(n[d]);
+    }
+    if (b.shape == BlockShape::box)
+        return all;
+    std::size_t total = 0;
+    const auto count_in = [&](auto dim) {
+        constexpr int D = decltype(dim)::value;
+        std::array<double, D> l{};
+        std::array<int, D> k{};
+        for (int d = 0; d < D; ++d) {
+            l[d] = lo[static_cast<std::size_t>(d)];
+            k[d] = n[static_cast<std::size_t>(d)];
+        }
+        for_each_lattice_point<D>(l, k, cfg.dx, [&](const Vec<D>& x) {
+            Triple at{};
+            for (int d = 0; d < D; ++d)
+                at[static_cast<std::size_t>(d)] = x[d];
+            total += inside_block_shape(b, at, D) ? 1 : 0;
+        });
+    };
+    if (cfg.dimension == 2)
+        count_in(std::integral_constant<int, 2>{});
+    else
+        count_in(std::integral_constant<int, 3>{});
+    return total;
+}
+
 } // namespace
+
+int block_lattice_count(const CaseConfig& cfg, const FluidBlock& b, int axis) {
+    int n = lattice_count(b.lo[axis], b.hi[axis], cfg.dx);
+    if (face_walled(cfg, axis, true)) {
+        // The last centre lo + (n - 1/2) dx at least dx/4 inside the face: n <= (face - lo)/dx
+        // + 1/4. Closer than that (0.75 dx from the first wall layer, or on the face as a
+        // 0.61 m block at dx = 0.02 m put it) the start is far from equilibrium.
+        const double fit = std::floor((cfg.tank_hi[axis] - b.lo[axis]) / cfg.dx + 0.25 + 1e-9);
+        n = std::min(n, static_cast<int>(std::max(0.0, fit)));
+    }
+    return n;
+}
 
 bool inside_block_shape(const FluidBlock& b, const Triple& x, int dimension) {
     double r2 = 0;
@@ -170,7 +293,7 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
         std::array<int, D> n{};
         for (int d = 0; d < D; ++d) {
             lo[d] = b.lo[d];
-            n[d] = lattice_count(b.lo[d], b.hi[d], dx);
+            n[d] = block_lattice_count(cfg, b, d);
         }
         const double top = b.hi[up];
         // Continuity scheme: every particle carries the reference mass rho0 dx^D of its lattice
@@ -254,32 +377,31 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
 template <int D>
 void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
     const double dx = cfg.dx;
-    std::array<double, D> lo{}, hi{};
-    std::array<int, D> n{};
+    std::array<std::vector<double>, D> sites;
+    std::array<AxisSites, D> axes;
     for (int d = 0; d < D; ++d) {
-        lo[d] = cfg.tank_lo[d] - (face_walled(cfg, d, false) ? layers * dx : 0.0);
-        hi[d] = cfg.tank_hi[d] + (face_walled(cfg, d, true) ? layers * dx : 0.0);
-        n[d] = lattice_count(lo[d], hi[d], dx);
+        axes[d] = tank_axis_sites(cfg, d, layers);
+        sites[d] = axes[d].x;
     }
     const double mass = cfg.rho0 * std::pow(dx, D);
-    for_each_lattice_point<D>(lo, n, dx, [&](const Vec<D>& x) {
+    for_each_site<D>(sites, [&](const std::array<int, D>& k, const Vec<D>& x) {
         bool inside_tank = true;
         for (int d = 0; d < D; ++d)
-            inside_tank = inside_tank && x[d] > cfg.tank_lo[d] && x[d] < cfg.tank_hi[d];
+            inside_tank = inside_tank && k[d] >= axes[d].n_a && k[d] < axes[d].n_a + axes[d].mid;
         if (inside_tank)
             return;
         P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(),
                     Real(cfg.rho0), Real(mass));
     });
-    // Solid obstacles: the box's lattice sites, `layers` deep from its surface.
+    // Solid obstacles: `layers` layers inside each face of the box.
     for (const WallBox& b : cfg.boxes) {
-        std::array<double, D> blo{};
+        std::array<std::vector<double>, D> bs;
         std::array<int, D> bn{};
         for (int d = 0; d < D; ++d) {
-            blo[d] = b.lo[d];
-            bn[d] = lattice_count(b.lo[d], b.hi[d], dx);
+            bs[d] = box_axis_sites(b, d, layers, dx).x;
+            bn[d] = static_cast<int>(bs[d].size());
         }
-        for_each_lattice_site<D>(blo, bn, dx, [&](const std::array<int, D>& k, const Vec<D>& x) {
+        for_each_site<D>(bs, [&](const std::array<int, D>& k, const Vec<D>& x) {
             if (in_box_shell<D>(k, bn, layers))
                 P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(),
                             Real(cfg.rho0), Real(mass));
@@ -289,64 +411,100 @@ void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
 
 std::size_t count_fluid_particles(const CaseConfig& cfg) {
     std::size_t total = 0;
-    for (const FluidBlock& b : cfg.blocks) {
-        std::array<double, 3> lo{};
-        std::array<int, 3> n{1, 1, 1};
-        std::size_t all = 1;
-        for (std::size_t d = 0; d < static_cast<std::size_t>(cfg.dimension); ++d) {
-            lo[d] = b.lo[d];
-            n[d] = lattice_count(b.lo[d], b.hi[d], cfg.dx);
-            all *= static_cast<std::size_t>(n[d]);
-        }
-        if (b.shape == BlockShape::box) {
-            total += all;
-            continue;
-        }
-        // Same lattice and test as add_fluid_blocks.
-        const auto count_in = [&](auto dim) {
-            constexpr int D = decltype(dim)::value;
-            std::array<double, D> l{};
-            std::array<int, D> k{};
-            for (int d = 0; d < D; ++d) {
-                l[d] = lo[static_cast<std::size_t>(d)];
-                k[d] = n[static_cast<std::size_t>(d)];
-            }
-            for_each_lattice_point<D>(l, k, cfg.dx, [&](const Vec<D>& x) {
-                Triple at{};
-                for (int d = 0; d < D; ++d)
-                    at[static_cast<std::size_t>(d)] = x[d];
-                total += inside_block_shape(b, at, D) ? 1 : 0;
-            });
-        };
-        if (cfg.dimension == 2)
-            count_in(std::integral_constant<int, 2>{});
-        else
-            count_in(std::integral_constant<int, 3>{});
-    }
+    for (const FluidBlock& b : cfg.blocks)
+        total += block_particles(cfg, b);
     return total;
 }
+
+namespace {
+
+// Wall particles of box b: its sites less those deeper than `layers` from every face.
+std::size_t box_particles(const CaseConfig& cfg, const WallBox& b, int layers,
+                          std::array<int, 3>& n) {
+    std::size_t all = 1, deep = 1;
+    for (int d = 0; d < cfg.dimension; ++d) {
+        n[static_cast<std::size_t>(d)] =
+            static_cast<int>(box_axis_sites(b, d, layers, cfg.dx).x.size());
+        all *= static_cast<std::size_t>(n[static_cast<std::size_t>(d)]);
+        deep *= static_cast<std::size_t>(std::max(0, n[static_cast<std::size_t>(d)] - 2 * layers));
+    }
+    return all - deep;
+}
+
+} // namespace
 
 std::size_t count_wall_particles(const CaseConfig& cfg, int layers) {
     if (cfg.walls != WallModel::dummy)
         return 0;
     std::size_t outer = 1, inner = 1;
     for (int d = 0; d < cfg.dimension; ++d) {
-        const double lo = cfg.tank_lo[d] - (face_walled(cfg, d, false) ? layers * cfg.dx : 0.0);
-        const double hi = cfg.tank_hi[d] + (face_walled(cfg, d, true) ? layers * cfg.dx : 0.0);
-        outer *= static_cast<std::size_t>(lattice_count(lo, hi, cfg.dx));
-        inner *= static_cast<std::size_t>(lattice_count(cfg.tank_lo[d], cfg.tank_hi[d], cfg.dx));
+        const AxisSites s = tank_axis_sites(cfg, d, layers);
+        outer *= s.x.size();
+        inner *= static_cast<std::size_t>(s.mid);
     }
     std::size_t boxes = 0;
-    for (const WallBox& b : cfg.boxes) {
-        std::size_t all = 1, deep = 1;
-        for (int d = 0; d < cfg.dimension; ++d) {
-            const int n = lattice_count(b.lo[d], b.hi[d], cfg.dx);
-            all *= static_cast<std::size_t>(n);
-            deep *= static_cast<std::size_t>(std::max(0, n - 2 * layers));
-        }
-        boxes += all - deep;
-    }
+    std::array<int, 3> n{};
+    for (const WallBox& b : cfg.boxes)
+        boxes += box_particles(cfg, b, layers, n);
     return outer - inner + boxes;
+}
+
+BuiltGeometry built_geometry(const CaseConfig& cfg, int layers) {
+    BuiltGeometry g;
+    const double dx = cfg.dx;
+    const int dim = cfg.dimension;
+    if (cfg.walls == WallModel::dummy) {
+        std::array<AxisSites, 3> axes;
+        for (int d = 0; d < dim; ++d)
+            axes[static_cast<std::size_t>(d)] = tank_axis_sites(cfg, d, layers);
+        for (int d = 0; d < dim; ++d)
+            for (const bool upper : {false, true}) {
+                if (!face_walled(cfg, d, upper))
+                    continue;
+                const AxisSites& s = axes[static_cast<std::size_t>(d)];
+                BuiltFace f;
+                f.axis = d;
+                f.upper = upper;
+                f.layers = layers;
+                f.requested = upper ? cfg.tank_hi[d] : cfg.tank_lo[d];
+                f.built = upper ? s.x[static_cast<std::size_t>(s.n_a + s.mid)] - 0.5 * dx
+                                : s.x[static_cast<std::size_t>(s.n_a - 1)] + 0.5 * dx;
+                f.particles = static_cast<std::size_t>(layers);
+                for (int e = 0; e < dim; ++e)
+                    if (e != d)
+                        f.particles *= axes[static_cast<std::size_t>(e)].x.size();
+                g.faces.push_back(f);
+            }
+        for (const WallBox& b : cfg.boxes) {
+            BuiltBox bb;
+            for (int d = 0; d < dim; ++d) {
+                const AxisSites s = box_axis_sites(b, d, layers, dx);
+                bb.lo[d] = s.x.front() - 0.5 * dx;
+                bb.hi[d] = s.x.back() + 0.5 * dx;
+                bb.thin[static_cast<std::size_t>(d)] = s.thin;
+            }
+            bb.particles = box_particles(cfg, b, layers, bb.sites);
+            g.boxes.push_back(bb);
+        }
+    }
+    for (const FluidBlock& b : cfg.blocks) {
+        BuiltBlock bb;
+        double requested = 1;
+        for (int d = 0; d < dim; ++d) {
+            const auto a = static_cast<std::size_t>(d);
+            bb.sites[a] = block_lattice_count(cfg, b, d);
+            bb.capped[a] = bb.sites[a] < lattice_count(b.lo[d], b.hi[d], dx);
+            bb.hi[a] = b.lo[a] + bb.sites[a] * dx;
+            requested *= b.hi[a] - b.lo[a];
+        }
+        if (b.shape == BlockShape::ellipse)
+            requested *= dim == 2 ? std::numbers::pi / 4 : std::numbers::pi / 6;
+        bb.particles = block_particles(cfg, b);
+        bb.volume = static_cast<double>(bb.particles) * std::pow(dx, dim);
+        bb.requested_volume = requested;
+        g.blocks.push_back(bb);
+    }
+    return g;
 }
 
 template void add_fluid_blocks<2>(const CaseConfig&, const Eos&, Particles<2>&);

@@ -2,6 +2,7 @@
 #include "sluice/solver/case_check.hpp"
 
 #include "sluice/io/errors.hpp"
+#include "sluice/physics/initial_conditions.hpp"
 #include "sluice/physics/kernels.hpp"
 
 #include <fmt/format.h>
@@ -58,8 +59,10 @@ std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& in
     std::vector<CaseWarning> out;
     const auto dim = static_cast<std::size_t>(cfg.dimension);
 
-    // Resolution: the smallest fluid block extent or tank dimension over dx. Periodic axes
-    // have no feature to resolve.
+    const BuiltGeometry built = built_geometry(cfg, wall_layers(info.support, cfg.dx));
+
+    // Resolution: the smallest fluid block extent (as built), tank dimension or obstacle extent
+    // over dx. Periodic axes have no feature to resolve.
     double smallest = std::numeric_limits<double>::infinity();
     std::string what;
     auto consider = [&](double extent, const std::string& name) {
@@ -72,10 +75,15 @@ std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& in
         if (cfg.periodic[a])
             continue;
         for (std::size_t i = 0; i < cfg.blocks.size(); ++i)
-            consider(cfg.blocks[i].hi[a] - cfg.blocks[i].lo[a],
+            consider(std::min(cfg.blocks[i].hi[a], built.blocks[i].hi[a]) - cfg.blocks[i].lo[a],
                      fmt::format("blocks[{}] along {}", i, kAxis[a]));
         if (cfg.walls != WallModel::none)
             consider(cfg.tank_hi[a] - cfg.tank_lo[a], fmt::format("the tank along {}", kAxis[a]));
+        // An obstacle's size sets the flow features around it (its wake, the run-up on its
+        // face), so the same 20 particles apply.
+        for (std::size_t i = 0; i < cfg.boxes.size(); ++i)
+            consider(cfg.boxes[i].hi[a] - cfg.boxes[i].lo[a],
+                     fmt::format("walls.boxes[{}] along {}", i, kAxis[a]));
     }
     if (std::isfinite(smallest) && smallest / cfg.dx < min_particles_across)
         out.push_back({"particles.dx",
@@ -84,6 +92,51 @@ std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& in
                                    "{:.3g} m gives {:.0f}",
                                    smallest / cfg.dx, what, smallest, cfg.dx, min_particles_across,
                                    smallest / min_particles_across, min_particles_across)});
+
+    // Geometry: a surface or a block edge as built more than 0.1 dx from where the case puts
+    // it (tank faces never are: their layers are laid from the face).
+    const double tol = 0.1 * cfg.dx;
+    for (const BuiltFace& f : built.faces)
+        if (std::abs(f.built - f.requested) > tol)
+            out.push_back({f.upper ? "walls.tank_hi" : "walls.tank_lo",
+                           fmt::format("the {}{} wall surface is built at {:.6g} m, {:.2g} dx "
+                                       "from {:.6g} m",
+                                       kAxis[f.axis], f.upper ? '+' : '-', f.built,
+                                       (f.built - f.requested) / cfg.dx, f.requested)});
+    for (std::size_t i = 0; i < built.boxes.size(); ++i)
+        for (std::size_t a = 0; a < dim; ++a) {
+            const BuiltBox& b = built.boxes[i];
+            const WallBox& c = cfg.boxes[i];
+            if (std::abs(b.lo[a] - c.lo[a]) <= tol && std::abs(b.hi[a] - c.hi[a]) <= tol)
+                continue;
+            out.push_back({fmt::format("walls.boxes[{}].hi", i),
+                           fmt::format("the obstacle is built {:.4g} m thick along {} instead of "
+                                       "{:.4g} m ({} to {} m): it is thinner than 2 x {} wall "
+                                       "layers and is filled with whole particles, centred; a "
+                                       "thickness of a whole number of dx = {:g} m avoids this",
+                                       b.hi[a] - b.lo[a], kAxis[a], c.hi[a] - c.lo[a], b.lo[a],
+                                       b.hi[a], wall_layers(info.support, cfg.dx), cfg.dx)});
+            break;
+        }
+    for (std::size_t i = 0; i < built.blocks.size(); ++i)
+        for (std::size_t a = 0; a < dim; ++a) {
+            const BuiltBlock& b = built.blocks[i];
+            const double want = cfg.blocks[i].hi[a];
+            if (std::abs(b.hi[a] - want) <= tol)
+                continue;
+            out.push_back(
+                {fmt::format("blocks[{}].hi", i),
+                 fmt::format(
+                     "the block's lattice ends at {} = {:.6g} m, {:+.2g} dx from hi = {:.6g} "
+                     "m ({} particles along {}{}; volume {:+.2f} %): a block extent of a "
+                     "whole number of dx = {:g} m avoids this",
+                     kAxis[a], b.hi[a], (b.hi[a] - want) / cfg.dx, want, b.sites[a], kAxis[a],
+                     b.capped[a] ? ", one fewer than round(extent/dx): the next would "
+                                   "sit within dx/4 of the walled tank face or beyond it"
+                                 : "",
+                     100 * (b.volume / b.requested_volume - 1), cfg.dx)});
+            break;
+        }
 
     // Cost: a tiny time step.
     if (info.dt_estimate < min_useful_dt) {

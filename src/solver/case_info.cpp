@@ -36,6 +36,64 @@ std::size_t bytes_per_particle(int dim) {
     return 8 * vec + 5 * sizeof(Real) + sizeof(ParticleId) + sizeof(Kind);
 }
 
+// "[a, b]" or "[a, b, c]" with 6 significant digits.
+std::string vec_str(const Triple& v, int dim) {
+    std::string s = "[";
+    for (int d = 0; d < dim; ++d)
+        s += fmt::format("{}{:.6g}", d ? ", " : "", v[static_cast<std::size_t>(d)]);
+    return s + "]";
+}
+
+// One line per walled tank face, obstacle and fluid block: where it is as built against the
+// case (case_warnings warns where they differ by more than 0.1 dx).
+std::vector<std::string> geometry_lines(const CaseConfig& cfg, int layers) {
+    std::vector<std::string> out;
+    const BuiltGeometry g = built_geometry(cfg, layers);
+    const int dim = cfg.dimension;
+    // Round-off (1e-18 m for a face at 0) printed as the case's value.
+    const auto shown = [&](double built, double want) {
+        return std::abs(built - want) < 1e-9 * cfg.dx ? want : built;
+    };
+    for (const BuiltFace& f : g.faces)
+        out.push_back(fmt::format("tank face {}{}: surface at {:.6g} m ({:+.3f} dx from the "
+                                  "case's {:.6g} m), {} layers, {} particles",
+                                  "xyz"[f.axis], f.upper ? '+' : '-', shown(f.built, f.requested),
+                                  (f.built - f.requested) / cfg.dx, f.requested, f.layers,
+                                  f.particles));
+    for (std::size_t i = 0; i < g.boxes.size(); ++i) {
+        BuiltBox b = g.boxes[i];
+        for (std::size_t d = 0; d < 3; ++d) {
+            b.lo[d] = shown(b.lo[d], cfg.boxes[i].lo[d]);
+            b.hi[d] = shown(b.hi[d], cfg.boxes[i].hi[d]);
+        }
+        std::string sites, thin;
+        for (int d = 0; d < dim; ++d) {
+            sites += fmt::format("{}{}", d ? " x " : "", b.sites[static_cast<std::size_t>(d)]);
+            if (b.thin[static_cast<std::size_t>(d)])
+                thin += "xyz"[d];
+        }
+        out.push_back(fmt::format(
+            "walls.boxes[{}]: {} to {} m (case {} to {}), {} sites, {} layers{}, {} particles", i,
+            vec_str(b.lo, dim), vec_str(b.hi, dim), vec_str(cfg.boxes[i].lo, dim),
+            vec_str(cfg.boxes[i].hi, dim), sites, layers,
+            thin.empty() ? std::string()
+                         : fmt::format(" (filled solid along {}: thinner than 2 x layers)", thin),
+            b.particles));
+    }
+    for (std::size_t i = 0; i < g.blocks.size(); ++i) {
+        const BuiltBlock& b = g.blocks[i];
+        std::string sites;
+        for (int d = 0; d < dim; ++d)
+            sites += fmt::format("{}{}", d ? " x " : "", b.sites[static_cast<std::size_t>(d)]);
+        out.push_back(fmt::format("blocks[{}]: {} to {} m (case to {}), {} sites, {} particles, "
+                                  "volume {:.6g} m^{} (case {:.6g}, {:+.2f} %)",
+                                  i, vec_str(cfg.blocks[i].lo, dim), vec_str(b.hi, dim),
+                                  vec_str(cfg.blocks[i].hi, dim), sites, b.particles, b.volume, dim,
+                                  b.requested_volume, 100 * (b.volume / b.requested_volume - 1)));
+    }
+    return out;
+}
+
 } // namespace
 
 CaseInfo describe_case(const CaseConfig& cfg) {
@@ -120,6 +178,7 @@ CaseInfo describe_case(const CaseConfig& cfg) {
         ph.push_back("periodic along: " + periodic);
     ph.push_back(cfg.fixed_dt ? fmt::format("time step: fixed {:.4g} s", *cfg.fixed_dt)
                               : std::string("time step: adaptive (CFL, viscous, force limits)"));
+    info.geometry = geometry_lines(cfg, layers);
     return info;
 }
 

@@ -4,12 +4,17 @@
 #include "sluice/io/case_reader.hpp"
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/initial_conditions.hpp"
+#include "sluice/physics/kernels.hpp"
+#include "sluice/solver/case_check.hpp"
+#include "sluice/solver/run.hpp"
 #include "sluice/solver/simulation.hpp"
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -184,4 +189,149 @@ TEST_CASE("a collapsing column piles up against a wall box and does not pass thr
     }
     // The surge did reach the box (so the check above was exercised).
     CHECK(reach > face - 1.5 * dx);
+}
+
+namespace {
+
+// A tank with every face walled, an obstacle box standing on its floor and two blocks, one of
+// which reaches the x+ and y+ (and z+) faces; no extent is a multiple of dx = 0.03 or 0.023.
+std::string any_dx_case(int dim, double dx) {
+    const bool d3 = dim == 3;
+    return fmt::format(
+        R"(
+[case]
+name = "any_dx"
+dimension = {}
+[domain]
+lo = {}
+hi = {}
+[fluid]
+rho0 = 1000.0
+sound_speed = 20.0
+viscosity = 0.0
+[particles]
+dx = {}
+[[blocks]]
+lo = {}
+hi = {}
+[[blocks]]
+lo = {}
+hi = {}
+[numerics]
+kernel = "wendland_c2"
+h_over_dx = 1.5
+[walls]
+model = "dummy"
+tank_lo = {}
+tank_hi = {}
+[[walls.boxes]]
+lo = {}
+hi = {}
+[time]
+end_time = 0.1
+)",
+        dim, d3 ? "[0.0, 0.0, 0.0]" : "[0.0, 0.0]", d3 ? "[1.013, 0.417, 0.8]" : "[1.013, 0.8]", dx,
+        d3 ? "[0.0, 0.0, 0.0]" : "[0.0, 0.0]", d3 ? "[0.301, 0.417, 0.5]" : "[0.301, 0.5]",
+        d3 ? "[0.7, 0.0, 0.0]" : "[0.7, 0.0]", d3 ? "[1.013, 0.417, 0.8]" : "[1.013, 0.8]",
+        d3 ? "[0.0, 0.0, 0.0]" : "[0.0, 0.0]", d3 ? "[1.013, 0.417, 0.8]" : "[1.013, 0.8]",
+        d3 ? "[0.413, 0.107, 0.0]" : "[0.413, 0.0]",
+        d3 ? "[0.617, 0.311, 0.337]" : "[0.617, 0.337]");
+}
+
+// Every wall surface as built (the fluid-side wall layer -/+ dx/2) within 0.05 dx of the
+// case; no fluid particle within dx/4 of a walled face or beyond it.
+template <int D>
+void check_any_dx(double dx) {
+    CAPTURE(D);
+    CAPTURE(dx);
+    const CaseConfig cfg = read_case(write_case("any_dx", any_dx_case(D, dx)));
+    const int layers = wall_layers(kernel_support_factor(cfg.kernel) * cfg.h_over_dx * dx, dx);
+    Particles<D> P;
+    add_fluid_blocks<D>(cfg, Eos{EosType::linear, cfg.rho0, cfg.sound_speed, 7, 0}, P);
+    CHECK(P.size() == count_fluid_particles(cfg));
+    const std::size_t fluid = P.size();
+    add_wall_particles<D>(cfg, layers, P);
+    CHECK(P.size() - fluid == count_wall_particles(cfg, layers));
+    const WallBox& box = cfg.boxes[0];
+    for (int d = 0; d < D; ++d) {
+        CAPTURE(d);
+        double below = -1e300, above = 1e300; // tank walls' fluid-side layers
+        double box_lo = 1e300, box_hi = -1e300;
+        double fluid_lo = 1e300, fluid_hi = -1e300;
+        for (std::size_t i = 0; i < P.size(); ++i) {
+            const double x = P.x[i][d];
+            if (P.kind[i] == Kind::fluid) {
+                fluid_lo = std::min(fluid_lo, x);
+                fluid_hi = std::max(fluid_hi, x);
+                continue;
+            }
+            bool in_box = true;
+            for (int e = 0; e < D; ++e)
+                in_box = in_box && P.x[i][e] > box.lo[e] && P.x[i][e] < box.hi[e];
+            if (in_box) {
+                box_lo = std::min(box_lo, x);
+                box_hi = std::max(box_hi, x);
+            } else if (x < cfg.tank_lo[d]) {
+                below = std::max(below, x);
+            } else if (x > cfg.tank_hi[d]) {
+                above = std::min(above, x);
+            }
+        }
+        CHECK(std::abs(below + dx / 2 - cfg.tank_lo[d]) < 0.05 * dx);
+        CHECK(std::abs(above - dx / 2 - cfg.tank_hi[d]) < 0.05 * dx);
+        CHECK(std::abs(box_lo - dx / 2 - box.lo[d]) < 0.05 * dx);
+        CHECK(std::abs(box_hi + dx / 2 - box.hi[d]) < 0.05 * dx);
+        CHECK(fluid_lo >= cfg.tank_lo[d] + dx / 4);
+        CHECK(fluid_hi <= cfg.tank_hi[d] - dx / 4 + 1e-12);
+    }
+    // The same surfaces as `sluice info` reports them.
+    const BuiltGeometry g = built_geometry(cfg, layers);
+    CHECK(g.faces.size() == 2u * D);
+    for (const BuiltFace& f : g.faces)
+        CHECK(std::abs(f.built - f.requested) < 1e-9 * dx);
+    for (int d = 0; d < D; ++d) {
+        CHECK(std::abs(g.boxes[0].lo[d] - box.lo[d]) < 1e-9 * dx);
+        CHECK(std::abs(g.boxes[0].hi[d] - box.hi[d]) < 1e-9 * dx);
+    }
+}
+
+} // namespace
+
+TEST_CASE("wall surfaces sit where the case puts them for a dx that divides nothing") {
+    for (double dx : {0.03, 0.023}) {
+        check_any_dx<2>(dx);
+        check_any_dx<3>(dx);
+    }
+}
+
+TEST_CASE("a block reaching a walled face keeps its particles dx/4 inside it") {
+    // 0.61 m at dx = 0.02: round(30.5) = 31 sites would put the last centre on the y+ face.
+    const std::string text = barrier_case("[0.4, 0.0]");
+    const CaseConfig cfg =
+        read_case(write_case("b", text),
+                  {"walls.tank_hi=[1.0, 0.61]", "domain.hi=[1.0, 0.61]", "blocks.0.hi=[0.2, 0.61]",
+                   "walls.boxes.0.hi=[0.46, 0.5]", "particles.dx=0.02",
+                   "walls.tank_faces=[\"x-\", \"x+\", \"y-\", \"y+\"]"});
+    CHECK(block_lattice_count(cfg, cfg.blocks[0], 1) == 30);
+    Particles<2> P;
+    add_fluid_blocks<2>(cfg, Eos{EosType::linear, cfg.rho0, cfg.sound_speed, 7, 0}, P);
+    for (std::size_t i = 0; i < P.size(); ++i)
+        CHECK(P.x[i][1] < 0.61 - 0.02 / 4);
+    const CaseInfo info = describe_case(cfg);
+    const auto w = case_warnings(cfg, info);
+    CHECK(std::any_of(w.begin(), w.end(),
+                      [](const CaseWarning& x) { return x.key == "blocks[0].hi"; }));
+}
+
+TEST_CASE("a box thinner than its layers is filled symmetrically; thinner than dx is refused") {
+    // 6 cm thick at dx = 0.025 (round(2.4) = 2 sites) with 3 layers: centred in the box.
+    const CaseConfig cfg = read_case(write_case("thin", barrier_case()), {"particles.dx=0.025"});
+    const BuiltGeometry g = built_geometry(cfg, 3);
+    CHECK(g.boxes[0].thin[0]);
+    CHECK(g.boxes[0].lo[0] + g.boxes[0].hi[0] == doctest::Approx(0.4 + 0.46));
+    CHECK(g.boxes[0].hi[0] - g.boxes[0].lo[0] == doctest::Approx(0.05));
+    const auto w = case_warnings(cfg, describe_case(cfg));
+    CHECK(std::any_of(w.begin(), w.end(),
+                      [](const CaseWarning& x) { return x.key == "walls.boxes[0].hi"; }));
+    CHECK(error_key(barrier_case(), {"particles.dx=0.07"}) == "walls.boxes[0].hi");
 }

@@ -7,6 +7,11 @@
 #include "sluice/io/case_config.hpp"
 #include "sluice/physics/eos.hpp"
 
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
 namespace sluice {
 
 // Number of wall layers needed so that a fluid particle on the wall sees a full support.
@@ -49,12 +54,49 @@ double ellipse_pressure(double rho0, double trace_g2, double a, double b, double
 template <int D>
 void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P);
 
-// Dummy wall particles (model = dummy): `layers` lattice layers outside each tank face named
-// in tank_faces, filling corners between walled faces, then every [[walls.boxes]] obstacle
-// as the lattice sites of the box (spacing dx, centred like a fluid block's) within `layers`
-// sites of its surface. Ids continue after the fluid.
+// Dummy wall particles (model = dummy): `layers` layers outside each tank face named in
+// tank_faces, laid from the face outwards (the first dx/2 behind it, then every dx), filling
+// corners between walled faces, then every [[walls.boxes]] obstacle as `layers` layers inside
+// each of its faces, laid from the face inwards the same way. Along a face the sites cover it
+// on a lattice of spacing dx centred between the faces across it. When dx divides an extent
+// (to 1e-9) the sites are exactly the lattice lo + (k + 1/2) dx of earlier versions (see
+// axis_sites in the .cpp). Ids continue after the fluid.
 template <int D>
 void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P);
+
+// Lattice sites of fluid block b along axis a: round(extent/dx), one fewer where that would put
+// the last particle centre closer than dx/4 to a walled tank face, or beyond it (the count is
+// at most floor((face - lo)/dx + 1/4)). Equal to round(extent/dx) when dx divides the extent.
+int block_lattice_count(const CaseConfig& cfg, const FluidBlock& b, int axis);
+
+// The geometry as built, for `sluice info` and the case warnings: where the wall surfaces and
+// the fluid end up. The surface of a wall as built is its fluid-side particle layer -/+ dx/2.
+struct BuiltFace {
+    int axis = 0;
+    bool upper = false;
+    double requested = 0, built = 0; // surface position [m]
+    int layers = 0;
+    std::size_t particles = 0; // sites of this face's layers (corners counted on each face)
+};
+struct BuiltBox {
+    Triple lo{}, hi{};                 // surfaces as built [m]
+    std::array<int, 3> sites{1, 1, 1}; // sites along each axis
+    std::array<bool, 3> thin{};        // axis filled symmetrically (thinner than 2 x layers)
+    std::size_t particles = 0;
+};
+struct BuiltBlock {
+    Triple hi{}; // upper lattice edge lo + n dx per axis [m]
+    std::array<int, 3> sites{1, 1, 1};
+    std::array<bool, 3> capped{}; // fewer sites than round(extent/dx): a walled face is near
+    std::size_t particles = 0;
+    double volume = 0, requested_volume = 0; // particles dx^D, and the shape's volume [m^D]
+};
+struct BuiltGeometry {
+    std::vector<BuiltFace> faces; // walled tank faces (dummy walls only)
+    std::vector<BuiltBox> boxes;
+    std::vector<BuiltBlock> blocks;
+};
+BuiltGeometry built_geometry(const CaseConfig& cfg, int layers);
 
 // Number of particles add_fluid_blocks/add_wall_particles would create (for `sluice info`).
 std::size_t count_fluid_particles(const CaseConfig& cfg);

@@ -45,8 +45,9 @@ struct CaseInfo {
     double dt_estimate = 0;  // time step the run starts with [s] (fixed, or dt_stable)
     double dt_stable = 0;    // stable time step at rest [s]
     double dt_acoustic = 0, dt_viscous = 0, dt_force = 0;
-    std::size_t cells = 0;            // micro-cells of the grid
-    std::vector<std::string> physics; // human-readable list of what is switched on
+    std::size_t cells = 0;             // micro-cells of the grid
+    std::vector<std::string> physics;  // human-readable list of what is switched on
+    std::vector<std::string> geometry; // the walls, obstacles and blocks as built
 };
 
 CaseInfo describe_case(const CaseConfig& cfg);
