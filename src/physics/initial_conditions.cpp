@@ -77,11 +77,18 @@ void for_each_site(const std::array<std::vector<double>, D>& sites, F&& f) {
 // n_a + n_b layers: `thin`), round((b - a)/dx) sites, at least one, centred in [a, b]. When dx
 // divides b - a (to 1e-9) the sites are a + (k + 1/2) dx, computed as the lattice of earlier
 // versions was, so such geometry stays bitwise identical.
+// (Outside the anonymous namespace: add_wall_particles<D>'s lambdas capture it, and GCC's
+// -Wsubobject-linkage objects to that in the sanitizer presets' unity builds.)
+} // namespace
+namespace detail {
 struct AxisSites {
     std::vector<double> x;
     int n_a = 0, mid = 0, n_b = 0; // sites in each part (thin: all in mid)
     bool thin = false;
 };
+} // namespace detail
+using detail::AxisSites;
+namespace {
 
 AxisSites axis_sites(double a, double b, int n_a, int n_b, double dx) {
     const double q = (b - a) / dx;
