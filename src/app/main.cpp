@@ -16,12 +16,17 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace {
 
@@ -99,6 +104,80 @@ void print_warnings(const std::vector<sluice::CaseWarning>& warnings) {
         fmt::print(stderr, "sluice: warning: key '{}': {}\n", w.key, w.message);
 }
 
+namespace fs = std::filesystem;
+
+// Why nothing can be written into the folder `dir`, or empty: creates and removes a probe
+// file in it (permission bits alone do not tell, e.g. for root or on /proc).
+std::string folder_unwritable(const fs::path& dir) {
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+        return fmt::format("'{}' is not a folder", dir.string());
+    const fs::path probe = dir / fmt::format(".sluice-write-check-{}", ::getpid());
+    std::FILE* f = std::fopen(probe.c_str(), "wx");
+    if (f == nullptr)
+        return fmt::format("'{}' is not writable ({})", dir.string(), std::strerror(errno));
+    std::fclose(f);
+    fs::remove(probe, ec);
+    return {};
+}
+
+// Why the results folder `out` cannot be created or written, or empty. Creates nothing: the
+// nearest existing folder on its path must be writable.
+std::string out_dir_problem(const std::string& out) {
+    std::error_code ec;
+    fs::path p = fs::absolute(out, ec).lexically_normal();
+    if (ec)
+        return ec.message();
+    if (!p.has_filename()) // "dir/": the folder itself
+        p = p.parent_path();
+    fs::path q = p;
+    // status() reports "not found" for a missing entry and for a path under a regular file.
+    while (fs::status(q, ec).type() == fs::file_type::not_found && q.has_relative_path())
+        q = q.parent_path();
+    if (q != p && !fs::is_directory(q, ec))
+        return fmt::format("'{}' is not a folder", q.string());
+    return folder_unwritable(q);
+}
+
+// Why the --trace file `trace` cannot be written, or empty. The trace is written at the end of
+// the run (as trace + ".tmp", renamed), into its folder or into the results folder `out`
+// that the run creates; an existing trace file is left as it is here.
+std::string trace_problem(const std::string& trace, const std::string& out) {
+    std::error_code ec;
+    const fs::path t = fs::absolute(trace, ec).lexically_normal();
+    if (ec)
+        return ec.message();
+    if (!t.has_filename() || fs::is_directory(t, ec))
+        return "it is a folder, not a file";
+    const fs::path dir = t.parent_path();
+    const fs::path out_abs = fs::absolute(out, ec).lexically_normal();
+    if (dir == out_abs || (!out_abs.has_filename() && dir == out_abs.parent_path()))
+        return out_dir_problem(out); // the run creates it; refused under --out if not
+    return folder_unwritable(dir);
+}
+
+// Refuses (CaseError, exit code 2) a results folder or trace file that the run could not
+// write, before anything is run or written. Rank 0 writes them, so rank 0 decides and every
+// rank learns the verdict (collective: every rank calls it at the same point).
+void check_outputs(const sluice::tasks::Comm& world, const sluice::RunOptions& opts) {
+    std::string option, problem;
+    if (world.rank() == 0) {
+        if (problem = out_dir_problem(opts.out_dir); !problem.empty())
+            option = fmt::format("option --{} '{}'", opts.restart_dir.empty() ? "out" : "restart",
+                                 opts.out_dir);
+        else if (!opts.trace_path.empty()) {
+            if (problem = trace_problem(opts.trace_path, opts.out_dir); !problem.empty())
+                option = fmt::format("option --trace '{}'", opts.trace_path);
+        }
+    }
+    if (world.parallel()) {
+        option = world.broadcast(option, 0);
+        problem = world.broadcast(problem, 0);
+    }
+    if (!problem.empty())
+        throw sluice::CaseError(option, "", "cannot be written: " + problem);
+}
+
 // What `sluice run` was given besides the case.
 struct RunFlags {
     std::string out_dir, trace, restart;
@@ -134,6 +213,7 @@ int execute(Command command, const std::string& case_path, const std::vector<std
             opts.restart_dir = flags.restart;
             opts.debug_fail_rank = flags.debug_fail_rank;
             opts.debug_fail_step = flags.debug_fail_step;
+            check_outputs(world, opts);
             const sluice::RunResult result = sluice::run_case(cfg, opts);
             if (result.stopped) {
                 if (root)

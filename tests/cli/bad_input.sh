@@ -125,6 +125,29 @@ expect_refused sensor_negative "probes\[0\].diameter"
 probe 'type = "water_level"\nx = 1.8' gauge_outside_tank
 expect_refused gauge_outside_tank "probes\[0\].x"
 
+# Outputs the run could not write are refused before it starts: exit code 2, a message naming
+# the option and the path, and nothing written (the working folder as it was).
+# expect_unwritable NAME OPTION-AND-PATH [sluice args...]
+touch plain_file
+expect_unwritable() {
+    local name=$1 option=$2
+    shift 2
+    local before
+    before=$(ls -A)
+    "$exe" run valid.toml "$@" >"$work.out" 2>"$work.err"
+    local rc=$?
+    [ "$rc" -eq 2 ] || fail "$name: exit code $rc, expected 2 ($(cat "$work.err"))"
+    grep -q "^sluice: error: option $option: cannot be written: " "$work.err" ||
+        fail "$name: stderr does not name $option: $(cat "$work.err")"
+    [ "$(ls -A)" = "$before" ] || fail "$name: something was written: $(ls -A)"
+    [ ! -s plain_file ] || fail "$name: plain_file was written to"
+    rm -f "$work.out" "$work.err"
+}
+expect_unwritable out_proc "--out '/proc/sluice_out'" --out /proc/sluice_out
+expect_unwritable out_under_file "--out 'plain_file/out'" --out plain_file/out
+expect_unwritable trace_proc "--trace '/proc/x.json'" --out ok --trace /proc/x.json
+expect_unwritable trace_no_folder "--trace 'no_folder/x.json'" --trace no_folder/x.json
+
 # A missing file is a case error too.
 "$exe" run missing.toml >/dev/null 2>err.txt
 rc=$?
