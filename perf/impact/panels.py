@@ -18,7 +18,9 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import analyse  # noqa: E402
 
-PANEL_HEIGHT = 0.02  # m: each panel holds two rows of wall particles at dx = 0.01 m
+# m: each panel holds two rows of wall particles at dx = 0.01 m (four at 0.005 m). Valid for
+# dx = 0.01 m / k only: at dx = 0.02 m the strips' edges fall on wall rows.
+PANEL_HEIGHT = 0.02
 PROBES = [("P1 (0.15-0.17 m) panel", "P1_panel"), ("P1 point", "P1"),
           ("80 mm panel", "y080mm_panel"), ("80 mm point", "y080mm"),
           ("30 mm panel", "y030mm_panel"), ("30 mm point", "y030mm"),
