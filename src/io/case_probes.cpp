@@ -1,0 +1,299 @@
+// The [[probes]] tables of a case file (case_probes.hpp).
+#include "case_probes.hpp"
+
+#include "sluice/physics/kernels.hpp"
+
+#include "case_limits.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace sluice::case_file {
+namespace {
+
+const std::vector<std::pair<std::string, ProbeType>> kProbeTypes = {
+    {"pressure", ProbeType::pressure},
+    {"water_level", ProbeType::water_level},
+    {"surge_front", ProbeType::surge_front},
+    {"force", ProbeType::force}};
+
+bool inside_domain(const CaseConfig& c, const Triple& p) {
+    const double eps = slack(c);
+    for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a)
+        if (p[a] < c.domain_lo[a] - eps || p[a] > c.domain_hi[a] + eps)
+            return false;
+    return true;
+}
+
+// A tank face name ("x+") as a ProbeWall; false when it is not one of this dimension's.
+bool parse_face(const std::string& f, int dim, ProbeWall& w) {
+    if (f.size() != 2 || (f[1] != '+' && f[1] != '-') || f[0] < 'x' || f[0] >= 'x' + dim)
+        return false;
+    w.face_axis = f[0] - 'x';
+    w.face_high = f[1] == '+';
+    return true;
+}
+
+// The face or box of a force or sensor probe (`face` or `box`; at most one).
+std::optional<ProbeWall> read_probe_wall(const Section& s, const CaseConfig& c) {
+    const bool has_face = s.node("face") != nullptr, has_box = s.node("box") != nullptr;
+    if (!has_face && !has_box)
+        return std::nullopt;
+    s.require(!(has_face && has_box), "box", "give either face or box, not both");
+    s.require(c.walls == WallModel::dummy, has_face ? "face" : "box",
+              "wall loads and wall sensors need dummy wall particles (walls.model = \"dummy\")");
+    ProbeWall w;
+    if (has_face) {
+        const std::string f = *s.string("face");
+        s.require(parse_face(f, c.dimension, w), "face",
+                  fmt::format("unknown face \"{}\"; allowed: \"x-\", \"x+\", \"y-\", \"y+\"{}", f,
+                              c.dimension == 3 ? ", \"z-\", \"z+\"" : ""));
+        s.require(std::find(c.tank_faces.begin(), c.tank_faces.end(), f) != c.tank_faces.end(),
+                  "face",
+                  fmt::format("the tank face \"{}\" carries no wall (walls.tank_faces = [{}])", f,
+                              join_list(c.tank_faces)));
+    } else {
+        const auto b = s.integer("box");
+        s.require(b && *b >= 0 && static_cast<std::size_t>(*b) < c.boxes.size(), "box",
+                  fmt::format("must be the index of a [[walls.boxes]] entry, 0 to {}; the case "
+                              "has {} boxes",
+                              c.boxes.empty() ? 0 : c.boxes.size() - 1, c.boxes.size()));
+        w.box = static_cast<int>(*b);
+    }
+    return w;
+}
+
+// A force probe's region: a face (the half-space behind it) or a box, cut to [lo, hi]; it
+// must reach wall particles.
+void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
+    const auto w = read_probe_wall(s, c);
+    if (!w)
+        s.reader().fail(s.key("face"),
+                        "missing required key: a force probe needs face (a tank face, \"x+\") "
+                        "or box (a walls.boxes index)");
+    p.wall = *w;
+    s.require(c.scheme == Scheme::wcsph, "type",
+              "force probes sum the pair forces of the WCSPH momentum equation; the projection "
+              "scheme has none");
+    p.lo = s.triple("lo");
+    p.hi = s.triple("hi");
+    p.moment_about = s.triple("moment_about");
+    if (p.moment_about)
+        s.require_triple_at_most(*p.moment_about, kMaxCoordinate, "moment_about", "m");
+    const auto dim = static_cast<std::size_t>(c.dimension);
+    const double eps = slack(c);
+    // Where the region's wall particles can be: the face's wall layers (one kernel support
+    // thick, corners included) or the box.
+    const double support = kernel_support_factor(c.kernel) * c.h_over_dx * c.dx;
+    const double thick = std::ceil(support / c.dx - 1e-9) * c.dx;
+    Triple wlo{}, whi{};
+    for (std::size_t a = 0; a < dim; ++a) {
+        if (p.wall.box >= 0) {
+            wlo[a] = c.boxes[static_cast<std::size_t>(p.wall.box)].lo[a];
+            whi[a] = c.boxes[static_cast<std::size_t>(p.wall.box)].hi[a];
+        } else if (static_cast<int>(a) == p.wall.face_axis) {
+            wlo[a] = p.wall.face_high ? c.tank_hi[a] : c.tank_lo[a] - thick;
+            whi[a] = p.wall.face_high ? c.tank_hi[a] + thick : c.tank_lo[a];
+        } else {
+            wlo[a] = c.tank_lo[a] - thick;
+            whi[a] = c.tank_hi[a] + thick;
+        }
+    }
+    for (std::size_t a = 0; a < dim; ++a) {
+        const double lo = p.lo ? (*p.lo)[a] : wlo[a], hi = p.hi ? (*p.hi)[a] : whi[a];
+        if (p.lo && p.hi)
+            s.require(lo < hi, "hi",
+                      fmt::format("must be above lo on every axis; on {}: lo = {}, hi = {}",
+                                  kAxis[a], lo, hi));
+        if (std::max(lo, wlo[a]) > std::min(hi, whi[a]) + eps) {
+            const bool low = p.lo && lo > whi[a];
+            s.fail(low ? "lo" : "hi",
+                   fmt::format("the force region touches no wall: on {}, {} = {} is {} the "
+                               "{}'s wall particles, which lie in [{}, {}]",
+                               kAxis[a], low ? "lo" : "hi", low ? lo : hi, low ? "above" : "below",
+                               p.wall.box >= 0 ? "box" : "face", wlo[a], whi[a]));
+        }
+    }
+}
+
+// An area sensor's wall: the given face or box, or the one its centre lies on; the centre
+// must be on that wall's surface within dx.
+void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
+    s.require(c.walls == WallModel::dummy, "diameter",
+              "an area sensor sits on dummy wall particles (walls.model = \"dummy\")");
+    const auto given = read_probe_wall(s, c);
+    const auto dim = static_cast<std::size_t>(c.dimension);
+    const double eps = slack(c);
+    double best = std::numeric_limits<double>::infinity();
+    // A candidate surface: normal axis, coordinate, and the tangential extent of the wall.
+    const auto consider = [&](std::size_t axis, double at, const Triple& lo, const Triple& hi) {
+        const double d = std::abs(p.position[axis] - at);
+        if (d > c.dx + eps || d >= best)
+            return;
+        for (std::size_t a = 0; a < dim; ++a)
+            if (a != axis && (p.position[a] < lo[a] - eps || p.position[a] > hi[a] + eps))
+                return;
+        best = d;
+        p.sensor_axis = static_cast<int>(axis);
+        p.sensor_surface = at;
+    };
+    for (const auto& f : c.tank_faces) {
+        ProbeWall w;
+        if (!parse_face(f, c.dimension, w))
+            continue;
+        if (given && (given->face_axis != w.face_axis || given->face_high != w.face_high))
+            continue;
+        const auto a = static_cast<std::size_t>(w.face_axis);
+        consider(a, w.face_high ? c.tank_hi[a] : c.tank_lo[a], c.tank_lo, c.tank_hi);
+    }
+    for (std::size_t b = 0; b < c.boxes.size(); ++b) {
+        if (given && given->box != static_cast<int>(b))
+            continue;
+        for (std::size_t a = 0; a < dim; ++a) {
+            consider(a, c.boxes[b].lo[a], c.boxes[b].lo, c.boxes[b].hi);
+            consider(a, c.boxes[b].hi[a], c.boxes[b].lo, c.boxes[b].hi);
+        }
+    }
+    if (p.sensor_axis < 0)
+        s.fail("position",
+               fmt::format("the sensor is off every wall: its centre must lie on the surface "
+                           "of {} within dx = {}",
+                           given ? (given->box >= 0 ? "the given box" : "the given tank face")
+                                 : "a walled tank face or a walls.boxes obstacle",
+                           c.dx));
+    if (given)
+        p.wall = *given;
+}
+
+} // namespace
+
+void read_probes(const Section& root, CaseConfig& c) {
+    std::set<std::string> names;
+    for (const auto& s : root.entries("probes")) {
+        ProbeConfig p;
+        const auto name = s.string("name");
+        if (!name)
+            s.reader().fail(s.key("name"), "missing required key (becomes probes/<name>.csv)");
+        p.name = *name;
+        // Names become file names: keep them portable and unsurprising.
+        const bool ok = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char ch) {
+            return std::isalnum(static_cast<unsigned char>(ch)) != 0 || ch == '_' || ch == '-';
+        });
+        s.require(ok, "name",
+                  fmt::format("\"{}\" is not a valid probe name (letters, digits, '_' and '-' "
+                              "only; it becomes a file name)",
+                              p.name));
+        s.require(p.name.size() <= kMaxNameLength, "name",
+                  fmt::format("is {} bytes long; at most {} (it becomes a file name)",
+                              p.name.size(), kMaxNameLength));
+        s.require(names.insert(p.name).second, "name",
+                  fmt::format("another probe is already called \"{}\"", p.name));
+
+        if (s.node("type") == nullptr)
+            s.reader().fail(s.key("type"), "missing required key (\"pressure\", \"water_level\", "
+                                           "\"surge_front\" or \"force\")");
+        p.type = s.choice("type", ProbeType::pressure, kProbeTypes);
+        const char* type_word = p.type == ProbeType::pressure      ? "pressure"
+                                : p.type == ProbeType::water_level ? "water_level"
+                                : p.type == ProbeType::force       ? "force"
+                                                                   : "surge_front";
+        const auto only_for = [&](std::string_view key, bool allowed) {
+            s.require(allowed || s.node(key) == nullptr, key,
+                      fmt::format("does not apply to a {} probe", type_word));
+        };
+        const bool pressure = p.type == ProbeType::pressure;
+        const bool force = p.type == ProbeType::force;
+        only_for("position", pressure);
+        only_for("x", p.type == ProbeType::water_level);
+        only_for("y", p.type == ProbeType::water_level);
+        only_for("diameter", pressure);
+        only_for("face", pressure || force);
+        only_for("box", pressure || force);
+        only_for("lo", force);
+        only_for("hi", force);
+        only_for("moment_about", force);
+        only_for("direction", p.type == ProbeType::surge_front);
+        only_for("min_thickness", p.type == ProbeType::surge_front);
+
+        if (pressure) {
+            p.position = s.required_triple("position", "point where pressure is sampled [m]");
+            s.require(inside_domain(c, p.position), "position",
+                      "the probe lies outside the domain");
+            if (s.node("diameter") != nullptr) {
+                p.diameter = s.required_number("diameter", "sensor diameter [m]");
+                s.require(p.diameter > 0, "diameter",
+                          fmt::format("must be > 0 (a sensor's diameter), got {}", p.diameter));
+                s.require(
+                    p.diameter <= kMaxCoordinate, "diameter",
+                    fmt::format("must be at most {:g} m, got {}", kMaxCoordinate, p.diameter));
+                read_sensor_wall(s, c, p);
+            } else {
+                s.require(s.node("face") == nullptr && s.node("box") == nullptr,
+                          s.node("face") != nullptr ? "face" : "box",
+                          "only an area sensor (with a diameter) sits on a wall");
+            }
+        }
+        if (p.type == ProbeType::water_level) {
+            p.x = s.required_number("x", "x position of the water-level gauge [m]");
+            s.require(p.x >= c.domain_lo[0] - slack(c) && p.x <= c.domain_hi[0] + slack(c), "x",
+                      fmt::format("the probe lies outside the domain: x = {} is not in [{}, {}]",
+                                  p.x, c.domain_lo[0], c.domain_hi[0]));
+            if (c.walls != WallModel::none)
+                s.require(p.x >= c.tank_lo[0] - slack(c) && p.x <= c.tank_hi[0] + slack(c), "x",
+                          fmt::format("the gauge lies outside the tank: x = {} is not in "
+                                      "[{}, {}]",
+                                      p.x, c.tank_lo[0], c.tank_hi[0]));
+            if (s.node("y") != nullptr) {
+                s.require(c.dimension == 3, "y",
+                          "a gauge's y applies in 3-D only (in 2-D y is the vertical)");
+                p.y = s.required_number("y", "y position of the water-level gauge [m]");
+                const double lo = c.walls != WallModel::none ? c.tank_lo[1] : c.domain_lo[1];
+                const double hi = c.walls != WallModel::none ? c.tank_hi[1] : c.domain_hi[1];
+                s.require(*p.y >= lo - slack(c) && *p.y <= hi + slack(c), "y",
+                          fmt::format("the gauge lies outside the {}: y = {} is not in [{}, {}]",
+                                      c.walls != WallModel::none ? "tank" : "domain", *p.y, lo,
+                                      hi));
+            }
+        }
+        if (p.type == ProbeType::surge_front) {
+            const std::string dir = s.string("direction").value_or("+x");
+            const bool known = dir.size() == 2 && (dir[0] == '+' || dir[0] == '-') &&
+                               dir[1] >= 'x' && dir[1] < 'x' + c.dimension;
+            s.require(known, "direction",
+                      fmt::format("unknown value \"{}\"; allowed: {}", dir,
+                                  c.dimension == 3 ? "\"+x\", \"-x\", \"+y\", \"-y\", \"+z\", "
+                                                     "\"-z\""
+                                                   : "\"+x\", \"-x\", \"+y\", \"-y\""));
+            p.direction_axis = dir[1] - 'x';
+            p.direction_negative = dir[0] == '-';
+            p.min_thickness = s.number("min_thickness", 2 * c.dx);
+            s.require(p.min_thickness > 0 && p.min_thickness <= kMaxCoordinate, "min_thickness",
+                      fmt::format("must be > 0 m (default 2 dx), got {}", p.min_thickness));
+        }
+        if (force)
+            read_force_region(s, c, p);
+
+        const toml::node* iv = s.node("interval");
+        if (iv != nullptr && iv->is_string()) {
+            s.require(iv->as_string()->get() == "every_step", "interval",
+                      fmt::format("unknown value \"{}\"; a number of seconds or \"every_step\"",
+                                  iv->as_string()->get()));
+            p.every_step = true;
+        } else {
+            p.interval = s.number("interval", 0);
+        }
+        s.require(p.interval >= 0, "interval",
+                  fmt::format("must be >= 0 (0 = every output interval), got {}", p.interval));
+        s.require(p.interval == 0 || c.end_time / p.interval <= kMaxOutputs, "interval",
+                  fmt::format("{} s would take {:.3g} samples up to end_time = {} s; at most {:g}",
+                              p.interval, c.end_time / p.interval, c.end_time, kMaxOutputs));
+        c.probes.push_back(p);
+    }
+}
+
+} // namespace sluice::case_file
