@@ -1,6 +1,8 @@
 // Bulk detection (cell hash + union-find) and the probes built on it.
 #include "sluice/physics/probes.hpp"
 
+#include "sluice/physics/cell_hash.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -39,49 +41,6 @@ private:
     std::vector<std::size_t> parent_, size_;
 };
 
-template <int D>
-using CellKey = std::array<std::int64_t, D>;
-
-template <int D>
-struct CellHash {
-    std::size_t operator()(const CellKey<D>& k) const {
-        std::uint64_t h = 1469598103934665603ULL;
-        for (auto c : k)
-            h = (h ^ static_cast<std::uint64_t>(c)) * 1099511628211ULL;
-        return static_cast<std::size_t>(h);
-    }
-};
-
-// Integer cell of a position; nullopt-like `false` for positions no cell can hold (NaN, or
-// so far away that the index would overflow): such a particle stays a component of its own.
-template <int D>
-bool cell_of(const Vec<D>& x, Real inv_size, CellKey<D>& out) {
-    for (int a = 0; a < D; ++a) {
-        const Real c = std::floor(x[a] * inv_size);
-        if (!(std::abs(c) < 1e15))
-            return false;
-        out[static_cast<std::size_t>(a)] = static_cast<std::int64_t>(c);
-    }
-    return true;
-}
-
-// The 3^D offsets to a cell and its neighbours (including the cell itself).
-template <int D>
-std::vector<CellKey<D>> neighbour_offsets() {
-    std::vector<CellKey<D>> out;
-    const int total = D == 2 ? 9 : 27;
-    for (int code = 0; code < total; ++code) {
-        CellKey<D> o{};
-        int rest = code;
-        for (std::size_t a = 0; a < static_cast<std::size_t>(D); ++a) {
-            o[a] = rest % 3 - 1;
-            rest /= 3;
-        }
-        out.push_back(o);
-    }
-    return out;
-}
-
 } // namespace
 
 template <int D>
@@ -99,13 +58,13 @@ std::vector<std::size_t> bulk_fluid(const Particles<D>& ps, Real dx) {
 
     // Bucket particles by cell (cell size = link distance, so linked pairs are in adjacent
     // cells): counting sort into a compact layout, O(N).
-    std::unordered_map<CellKey<D>, std::size_t, CellHash<D>> cell_index;
+    std::unordered_map<CellKey<D>, std::size_t, CellKeyHash<D>> cell_index;
     cell_index.reserve(n);
     std::vector<std::size_t> cell_of_particle(n, SIZE_MAX);
     std::vector<std::size_t> count;
     for (std::size_t k = 0; k < n; ++k) {
         CellKey<D> key;
-        if (!cell_of<D>(ps.x[fluid[k]], 1 / link, key))
+        if (!cell_key_of<D>(ps.x[fluid[k]], 1 / link, key))
             continue;
         const auto [it, added] = cell_index.try_emplace(key, count.size());
         if (added)
@@ -123,7 +82,7 @@ std::vector<std::size_t> bulk_fluid(const Particles<D>& ps, Real dx) {
             members[fill[cell_of_particle[k]]++] = k;
 
     UnionFind uf(n);
-    const auto offsets = neighbour_offsets<D>();
+    const auto offsets = cell_neighbour_offsets<D>();
     for (const auto& [key, c] : cell_index) {
         for (const auto& off : offsets) {
             CellKey<D> nk;
@@ -221,12 +180,12 @@ Real surge_front_directed(const Particles<D>& ps, Real dx, int axis, bool negati
     const long needed = std::max(1L, std::lround(min_thickness / dx));
     const Real sign = negative ? Real(-1) : Real(1);
     // Column key: the cell along every axis but `depth`.
-    std::unordered_map<CellKey<D>, std::pair<long, Real>, CellHash<D>> columns;
+    std::unordered_map<CellKey<D>, std::pair<long, Real>, CellKeyHash<D>> columns;
     for (std::size_t i = 0; i < ps.size(); ++i) {
         if (ps.kind[i] != Kind::fluid)
             continue;
         CellKey<D> key;
-        if (!cell_of<D>(ps.x[i], 1 / dx, key))
+        if (!cell_key_of<D>(ps.x[i], 1 / dx, key))
             continue;
         key[static_cast<std::size_t>(depth)] = 0;
         const Real s = sign * ps.x[i][axis];

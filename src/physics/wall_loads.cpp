@@ -2,6 +2,8 @@
 // fluid-wall pair terms of the momentum equation summed per wall particle.
 #include "sluice/physics/wall_loads.hpp"
 
+#include "sluice/physics/cell_hash.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -12,58 +14,30 @@
 namespace sluice {
 namespace {
 
-template <int D>
-using Key = std::array<std::int64_t, D>;
-
-template <int D>
-struct KeyHash {
-    std::size_t operator()(const Key<D>& k) const {
-        std::uint64_t h = 1469598103934665603ULL;
-        for (auto c : k)
-            h = (h ^ static_cast<std::uint64_t>(c)) * 1099511628211ULL;
-        return static_cast<std::size_t>(h);
-    }
-};
-
-// Cell of a position; false for positions no cell can hold (NaN, or absurdly far).
-template <int D>
-bool key_of(const Vec<D>& x, Real inv, Key<D>& out) {
-    for (int a = 0; a < D; ++a) {
-        const Real c = std::floor(x[a] * inv);
-        if (!(std::abs(c) < 1e15))
-            return false;
-        out[static_cast<std::size_t>(a)] = static_cast<std::int64_t>(c);
-    }
-    return true;
-}
-
 // Fluid particles bucketed by cells of edge `size` (ascending index within a cell).
 template <int D>
 struct FluidCells {
     Real inv;
-    std::unordered_map<Key<D>, std::vector<std::size_t>, KeyHash<D>> cells;
+    std::unordered_map<CellKey<D>, std::vector<std::size_t>, CellKeyHash<D>> cells;
+    std::vector<CellKey<D>> offsets = cell_neighbour_offsets<D>();
 
     FluidCells(const Particles<D>& P, Real size) : inv(1 / size) {
         for (std::size_t i = 0; i < P.size(); ++i) {
-            Key<D> k;
-            if (P.kind[i] == Kind::fluid && key_of<D>(P.x[i], inv, k))
+            CellKey<D> k;
+            if (P.kind[i] == Kind::fluid && cell_key_of<D>(P.x[i], inv, k))
                 cells[k].push_back(i);
         }
     }
     // Calls f(i) for every fluid particle of the 3^D cells around x, in a fixed order.
     template <class F>
     void around(const Vec<D>& x, F&& f) const {
-        Key<D> k;
-        if (!key_of<D>(x, inv, k))
+        CellKey<D> k;
+        if (!cell_key_of<D>(x, inv, k))
             return;
-        const int total = D == 2 ? 9 : 27;
-        for (int code = 0; code < total; ++code) {
-            Key<D> n = k;
-            int rest = code;
-            for (std::size_t a = 0; a < static_cast<std::size_t>(D); ++a) {
-                n[a] += rest % 3 - 1;
-                rest /= 3;
-            }
+        for (const CellKey<D>& o : offsets) {
+            CellKey<D> n = k;
+            for (std::size_t a = 0; a < static_cast<std::size_t>(D); ++a)
+                n[a] += o[a];
             const auto it = cells.find(n);
             if (it == cells.end())
                 continue;
