@@ -93,7 +93,7 @@ WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<
             Real s;
             if (prm.riemann) {
                 // No dissipation in fluid-wall pairs (riemann_acceleration): dU = 0.
-                const Real p_star = riemann_pressure(rho_i, rho_j, pi, pj, 0, prm.c0, prm.limiter);
+                const Real p_star = riemann_pressure(rho_i, rho_j, pi, pj, 0, prm.c0, 0);
                 s = 2 * (p_star - prm.p_gauge) / (rho_i * rho_j);
             } else {
                 s = (pi - prm.p_gauge) / (rho_i * rho_i) + (pj - prm.p_gauge) / (rho_j * rho_j);

@@ -40,7 +40,6 @@ struct WallLoadParams {
     Real c0 = 0;            // speed of sound (artificial viscosity, Riemann solver)
     Real h = 0;             // smoothing length
     bool riemann = false;   // numerics.dissipation = "riemann": the pair pressure is P*
-    Real limiter = 3;       // the Riemann solver's eta
     bool no_slip = true;    // how v_bc is recomputed: mirrored (no-slip) or copied mean velocity
     bool adami_v_bc = true; // recompute v_bc from the fluid; false: read P.v_bc
 };
