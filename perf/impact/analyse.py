@@ -25,9 +25,11 @@ from __future__ import annotations
 
 import argparse
 import csv
+import dataclasses
 import json
 import math
 import re
+import statistics
 import sys
 import tomllib
 from dataclasses import dataclass, field
@@ -499,15 +501,36 @@ def print_experiment(sc: Scales, window_star: float, filter_s: float) -> None:
 CRITERION = 0.15  # issue 18: the filtered peak changes by less than 15 %
 
 
+def ensemble_medians(results: list[ProbeResult]) -> list[ProbeResult]:
+    """One result per (dx, c0) of a variant and probe: the runs of an ensemble (study.py
+    --jitters: labels ending in _j<jitter>) replaced by one whose peak and impulse are their
+    medians. A single run stands for itself."""
+    groups: dict[tuple, list[ProbeResult]] = {}
+    for r in results:
+        groups.setdefault((r.run.dx, r.run.c0_factor), []).append(r)
+    out = []
+    for g in groups.values():
+        if len(g) == 1:
+            out.append(g[0])
+            continue
+        med = dataclasses.replace(g[0], metrics=dict(g[0].metrics))
+        for k in ("peak_filt_star", "impulse_star"):
+            vals = [x.metrics[k] for x in g if math.isfinite(x.metrics[k])]
+            med.metrics[k] = statistics.median(vals) if vals else math.nan
+        out.append(med)
+    return out
+
+
 def convergence_pairs(results: list[ProbeResult]) -> list[dict]:
     """For each variant and probe: the relative change of the filtered peak (and of the
     impulse) between successive c0 at each dx, and between successive dx at each c0,
-    relative to the stiffer / finer run: (P_b - P_a) / P_b."""
+    relative to the stiffer / finer run: (P_b - P_a) / P_b; ensembles by their medians."""
     by = {}
     for r in results:
         by.setdefault((r.run.variant, r.probe), []).append(r)
     pairs = []
-    for (variant, probe), rs in by.items():
+    for (variant, probe), members in by.items():
+        rs = ensemble_medians(members)
         for kind, group_key, step_key in (("c0", "dx", "c0_factor"), ("dx", "c0_factor", "dx")):
             groups = {}
             for r in rs:

@@ -108,7 +108,7 @@ def plan_runs(a, case: dict) -> list[dict]:
     runs = []
     for vname, vset in a.variants:
         for dx in a.dx:
-            for k in a.c0:
+            for k, jitter in [(k, j) for k in a.c0 for j in a.jitters]:
                 c0 = k * sqrt_gH
                 ov: dict[str, object] = {"particles.dx": dx, "fluid.sound_speed": c0,
                                          "time.end_time": a.end_time}
@@ -119,6 +119,8 @@ def plan_runs(a, case: dict) -> list[dict]:
                     probes[p["name"]] = {"index": i, "position": pos}
                 if a.no_snapshots:
                     ov["output.snapshots"] = False
+                if jitter is not None:
+                    ov["particles.jitter"] = jitter
                 ov.update(a.common)
                 ov.update(vset)
                 # record what the run really gets, should an override change dx, c0 or a probe
@@ -126,7 +128,7 @@ def plan_runs(a, case: dict) -> list[dict]:
                 c0 = float(ov["fluid.sound_speed"])
                 for name, rec in probes.items():
                     rec["position"] = list(ov[f"probes.{rec['index']}.position"])
-                label = f"H{sc.H / dx:g}_c{k:g}"
+                label = f"H{sc.H / dx:g}_c{k:g}" + ("" if jitter is None else f"_j{jitter:g}")
                 n_part = area / dx**2 + 3 * perimeter / dx
                 dt = float(num.get("cfl", 0.25)) * float(num.get("h_over_dx", 1.5)) * dx / c0
                 runs.append({"variant": vname, "label": label, "dx": dx_run, "c0": c0,
@@ -206,6 +208,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--reuse", action="store_true",
                     help="skip runs whose results exist with the same overrides")
     ap.add_argument("--no-snapshots", action="store_true", help="probes only")
+    ap.add_argument("--jitters", help="an ensemble per point: particles.jitter values, "
+                    "comma-separated (e.g. 0,0.002,0.005,0.01); convergence is then judged on "
+                    "the medians (a first-impact peak varies up to 2x between such runs)")
     ap.add_argument("--window", type=float, default=analyse.DEFAULT_WINDOW_STAR)
     ap.add_argument("--filter-ms", type=float, default=1e3 * analyse.DEFAULT_FILTER_S)
     ap.add_argument("--no-analyse", action="store_true")
@@ -218,6 +223,7 @@ def main(argv: list[str] | None = None) -> int:
     res = a.resolutions.split(",") if a.resolutions else (QUICK_RES if a.quick else DEFAULT_RES)
     a.dx = [parse_resolution(s, H) for s in res]
     a.c0 = [float(x) for x in a.c0.split(",")] if a.c0 else (QUICK_C0 if a.quick else DEFAULT_C0)
+    a.jitters = [float(x) for x in a.jitters.split(",")] if a.jitters else [None]
     try:
         variants = [parse_variant(v) for v in a.variant]
         a.common = dict(parse_set(s) for s in a.sets)
