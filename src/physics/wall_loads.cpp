@@ -3,6 +3,7 @@
 #include "sluice/physics/wall_loads.hpp"
 
 #include "sluice/physics/cell_hash.hpp"
+#include "sluice/physics/walls.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -65,17 +66,14 @@ WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<
         // The boundary velocity of the viscous terms (walls.hpp, dummy_wall_state).
         Vec<D> v_bc = P.v_bc[j];
         if ((laminar || artificial) && prm.adami_v_bc) {
-            Real sum_w = 0;
-            Vec<D> sum_v = Vec<D>::Zero();
+            AdamiSums<D> sums;
             fluid.around(xj, [&](std::size_t i) {
-                const Real r2 = (P.x[i] - xj).squaredNorm();
-                if (r2 >= support2)
-                    return;
-                const Real W = kernel.W(std::sqrt(r2));
-                sum_w += W;
-                sum_v += W * P.v[i];
+                const Vec<D> dx = xj - P.x[i];
+                const Real r2 = dx.squaredNorm();
+                if (r2 < support2)
+                    sums.add(kernel.W(std::sqrt(r2)), P.p[i], P.rho[i], dx, P.v[i]);
             });
-            v_bc = sum_w > 0 ? Vec<D>((prm.no_slip ? -1 : 1) * sum_v / sum_w) : Vec<D>::Zero();
+            v_bc = sums.boundary_velocity(prm.no_slip);
         }
         const Real rho_j = P.rho[j];
         const Real pj = std::max(P.p[j], prm.p_floor);
@@ -193,19 +191,14 @@ void refresh_dummy_walls(Particles<D>& P, const AnyKernel<D>& kernel, const Eos&
             for (std::size_t w = 0; w < P.size(); ++w) {
                 if (P.kind[w] != Kind::wall)
                     continue;
-                Real sum_w = 0, sum_pw = 0;
-                Vec<D> sum_rho_r = Vec<D>::Zero();
+                AdamiSums<D> sums;
                 fluid.around(P.x[w], [&](std::size_t f) {
                     const Vec<D> dx = P.x[w] - P.x[f];
                     const Real r2 = dx.squaredNorm();
-                    if (r2 >= support * support)
-                        return;
-                    const Real W = k.W(std::sqrt(r2));
-                    sum_w += W;
-                    sum_pw += P.p[f] * W;
-                    sum_rho_r += P.rho[f] * W * dx;
+                    if (r2 < support * support)
+                        sums.add(k.W(std::sqrt(r2)), P.p[f], P.rho[f], dx, P.v[f]);
                 });
-                P.p[w] = sum_w > 0 ? (sum_pw + gravity.dot(sum_rho_r)) / sum_w : eos.p_background;
+                P.p[w] = sums.pressure(gravity, eos.p_background);
                 P.rho[w] = eos.density(P.p[w]);
                 P.mass[w] = P.rho[w] * wall_volume;
             }

@@ -48,6 +48,35 @@ void reflect(const std::vector<Plane<D>>& planes, Real restitution, Vec<D>& x, V
     }
 }
 
+// Adami's extrapolation for one wall particle w: the kernel-weighted sums over the fluid
+// particles f around it (dx = x_w - x_f), and the pressure and boundary velocity they give.
+// One definition for the step (dummy_wall_state) and for the measurements that need the
+// walls' state outside a step (physics/wall_loads.cpp).
+template <int D>
+struct AdamiSums {
+    Real w = 0, pw = 0;
+    Vec<D> rho_r = Vec<D>::Zero();
+    Vec<D> v = Vec<D>::Zero();
+
+    void add(Real W, Real p_f, Real rho_f, const Vec<D>& dx, const Vec<D>& v_f) {
+        w += W;
+        pw += p_f * W;
+        rho_r += rho_f * W * dx;
+        v += W * v_f;
+    }
+    // p_w = [sum_f p_f W + g . sum_f rho_f (x_w - x_f) W] / sum_f W (fixed walls, a_w = 0);
+    // the background pressure where no fluid is near.
+    [[nodiscard]] Real pressure(const Vec<D>& gravity, Real p_background) const {
+        return w > 0 ? (pw + gravity.dot(rho_r)) / w : p_background;
+    }
+    // v_bc = -(mean fluid velocity) for no-slip (2 v_w - <v>, v_w = 0), +<v> for free slip.
+    [[nodiscard]] Vec<D> boundary_velocity(bool no_slip) const {
+        if (w <= 0)
+            return Vec<D>::Zero();
+        return no_slip ? Vec<D>(-v / w) : Vec<D>(v / w);
+    }
+};
+
 // Adami pressure, density, mass (rho_w V_w) and boundary velocity of the wall particles of
 // cell c (fixed walls: a_w = 0, v_w = 0).
 template <int D, class K>
@@ -58,25 +87,14 @@ SLUICE_FLATTEN void dummy_wall_state(const Neighbourhood<D>& nb, const K& kernel
     for (std::uint32_t w = nb.begin(c); w < nb.end(c); ++w) {
         if (P.kind[w] != Kind::wall)
             continue;
-        Real sum_w = 0, sum_pw = 0;
-        Vec<D> sum_rho_r = Vec<D>::Zero();
-        Vec<D> sum_v = Vec<D>::Zero();
+        AdamiSums<D> sums;
         nb.for_each_neighbour(adj, w, [&](std::uint32_t f, const Vec<D>& dx, Real r2) {
             if (P.kind[f] != Kind::fluid)
                 return;
-            const Real W = kernel.W(std::sqrt(r2));
-            sum_w += W;
-            sum_pw += P.p[f] * W;
-            sum_rho_r += P.rho[f] * W * dx; // dx = x_w - x_f
-            sum_v += W * P.v[f];
+            sums.add(kernel.W(std::sqrt(r2)), P.p[f], P.rho[f], dx, P.v[f]);
         });
-        if (sum_w > 0) {
-            P.p[w] = (sum_pw + gravity.dot(sum_rho_r)) / sum_w;
-            P.v_bc[w] = no_slip ? Vec<D>(-sum_v / sum_w) : Vec<D>(sum_v / sum_w);
-        } else {
-            P.p[w] = eos.p_background;
-            P.v_bc[w].setZero();
-        }
+        P.p[w] = sums.pressure(gravity, eos.p_background);
+        P.v_bc[w] = sums.boundary_velocity(no_slip);
         P.rho[w] = eos.density(P.p[w]);
         P.mass[w] = P.rho[w] * wall_volume;
     }
