@@ -733,6 +733,12 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
         top.sub("walls").require(false, "model",
                                  "numerics.scheme = \"projection\" needs \"dummy\" walls (or "
                                  "\"none\"): its wall pressure condition lives on wall particles");
+    // Fluid-wall pairs exist only with dummy wall particles: elsewhere the key would do nothing.
+    if (c.walls != WallModel::dummy)
+        top.sub("numerics")
+            .require(top.sub("numerics").node("wall_artificial_viscosity") == nullptr,
+                     "wall_artificial_viscosity",
+                     "applies only to walls.model = \"dummy\" (fluid-wall pairs)");
     check_blocks_in_tank(top, c);
     read_time(top.sub("time"), c);
     read_output(top.sub("output"), c);

@@ -68,19 +68,21 @@ std::vector<std::size_t> force_region(const CaseConfig& cfg, const ProbeConfig& 
     return wall_particles_in(P, lo, hi);
 }
 
+// The wall-load probes' pair terms: the momentum equation's own parameters.
 template <int D>
-WallLoadParams<D> wall_load_params(const CaseConfig& cfg) {
+WallLoadParams<D> wall_load_params(const Simulation<D>& sim) {
+    const MomentumParams<D>& m = sim.momentum();
     WallLoadParams<D> w;
-    w.p_floor = Real(cfg.background_pressure);
-    w.p_gauge = Real(cfg.background_pressure);
-    w.mu = Real(cfg.viscosity);
-    w.wall_viscous = cfg.no_slip;
-    w.alpha = Real(cfg.artificial_viscosity);
-    w.wall_artificial = cfg.wall_artificial_viscosity;
-    w.c0 = Real(cfg.sound_speed);
-    w.h = Real(cfg.h_over_dx * cfg.dx);
-    w.riemann = cfg.dissipation == Dissipation::riemann;
-    w.no_slip = cfg.no_slip;
+    w.p_floor = m.p_floor;
+    w.p_gauge = m.p_floor; // the background pressure
+    w.mu = m.mu;
+    w.wall_viscous = m.wall_viscous;
+    w.alpha = m.alpha;
+    w.wall_artificial = m.wall_artificial;
+    w.c0 = m.c0;
+    w.h = m.h;
+    w.riemann = sim.config().dissipation == Dissipation::riemann;
+    w.no_slip = sim.config().no_slip;
     return w;
 }
 
@@ -115,8 +117,8 @@ std::vector<double> probe_value(const Simulation<D>& sim, const Particles<D>& P,
         if (probe.moment_about)
             for (int d = 0; d < D; ++d)
                 about[d] = Real((*probe.moment_about)[static_cast<std::size_t>(d)]);
-        const WallLoad load = wall_load(P, sim.kernel(), wall_load_params<D>(cfg),
-                                        force_region(cfg, probe, P), about);
+        const WallLoad load =
+            wall_load(P, sim.kernel(), wall_load_params(sim), force_region(cfg, probe, P), about);
         std::vector<double> row(load.force.begin(), load.force.begin() + D);
         if (probe.moment_about) {
             if (D == 3)

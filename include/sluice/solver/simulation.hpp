@@ -125,6 +125,8 @@ public:
     [[nodiscard]] const CellGrid<D>& grid() const { return grid_; }
     [[nodiscard]] const AnyKernel<D>& kernel() const { return kernel_; }
     [[nodiscard]] const Eos& eos() const { return eos_; }
+    // The momentum equation's parameters (the wall-load probes use the same pair terms).
+    [[nodiscard]] const MomentumParams<D>& momentum() const { return momentum_; }
     [[nodiscard]] const CaseConfig& config() const { return cfg_; }
     [[nodiscard]] const tasks::StepGraph& graph() const { return *graph_; }
     [[nodiscard]] int decompositions() const { return decompositions_; }
