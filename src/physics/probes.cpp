@@ -49,6 +49,12 @@ std::vector<std::size_t> bulk_fluid(const Particles<D>& ps, Real dx) {
     for (std::size_t i = 0; i < ps.size(); ++i)
         if (ps.kind[i] == Kind::fluid)
             fluid.push_back(i);
+    return bulk_fluid(ps, dx, fluid);
+}
+
+template <int D>
+std::vector<std::size_t> bulk_fluid(const Particles<D>& ps, Real dx,
+                                    const std::vector<std::size_t>& fluid) {
     const std::size_t n = fluid.size();
     if (n == 0)
         return {};
@@ -174,32 +180,58 @@ Real water_level_at(const Particles<D>& ps, const std::vector<std::size_t>& bulk
 }
 
 template <int D>
-Real surge_front_directed(const Particles<D>& ps, Real dx, int axis, bool negative,
-                          Real min_thickness) {
-    const int depth = axis == D - 1 ? 0 : D - 1;
-    const long needed = std::max(1L, std::lround(min_thickness / dx));
-    const Real sign = negative ? Real(-1) : Real(1);
+Real gauge_water_level(const Particles<D>& ps, Real dx, Real x, std::optional<Real> y) {
+    std::vector<std::size_t> column;
+    for (std::size_t i = 0; i < ps.size(); ++i)
+        if (ps.kind[i] == Kind::fluid && std::abs(ps.x[i][0] - x) <= dx &&
+            !(D == 3 && y && std::abs(ps.x[i][1] - *y) > dx))
+            column.push_back(i);
+    return water_level(ps, bulk_fluid(ps, dx, column), dx, x);
+}
+
+template <int D>
+FrontColumns<D>::FrontColumns(Real dx, int axis, bool negative)
+    : dx_(dx), axis_(axis), depth_(axis == D - 1 ? 0 : D - 1), sign_(negative ? -1 : 1) {}
+
+template <int D>
+void FrontColumns<D>::add(const Particles<D>& ps, std::size_t end) {
     // Column key: the cell along every axis but `depth`.
-    std::unordered_map<CellKey<D>, std::pair<long, Real>, CellKeyHash<D>> columns;
-    for (std::size_t i = 0; i < ps.size(); ++i) {
+    for (std::size_t i = 0; i < end; ++i) {
         if (ps.kind[i] != Kind::fluid)
             continue;
         CellKey<D> key;
-        if (!cell_key_of<D>(ps.x[i], 1 / dx, key))
+        if (!cell_key_of<D>(ps.x[i], 1 / dx_, key))
             continue;
-        key[static_cast<std::size_t>(depth)] = 0;
-        const Real s = sign * ps.x[i][axis];
-        auto [it, added] = columns.try_emplace(key, 0L, -std::numeric_limits<Real>::infinity());
-        ++it->second.first;
-        it->second.second = std::max(it->second.second, s);
+        key[static_cast<std::size_t>(depth_)] = 0;
+        merge(key, Column{1, sign_ * ps.x[i][axis_]});
     }
+}
+
+template <int D>
+void FrontColumns<D>::merge(const CellKey<D>& key, const Column& c) {
+    Column& mine = columns_[key];
+    mine.count += c.count;
+    mine.furthest = std::max(mine.furthest, c.furthest);
+}
+
+template <int D>
+Real FrontColumns<D>::front(Real min_thickness) const {
+    const long needed = std::max(1L, std::lround(min_thickness / dx_));
     Real front = -std::numeric_limits<Real>::infinity();
-    for (const auto& [key, c] : columns)
-        if (c.first >= needed)
-            front = std::max(front, c.second);
+    for (const auto& [key, c] : columns_)
+        if (c.count >= needed)
+            front = std::max(front, c.furthest);
     if (front == -std::numeric_limits<Real>::infinity())
         return std::numeric_limits<Real>::quiet_NaN();
-    return sign * (front + dx / 2);
+    return sign_ * (front + dx_ / 2);
+}
+
+template <int D>
+Real surge_front_directed(const Particles<D>& ps, Real dx, int axis, bool negative,
+                          Real min_thickness) {
+    FrontColumns<D> columns(dx, axis, negative);
+    columns.add(ps, ps.size());
+    return columns.front(min_thickness);
 }
 
 template Real water_level_at<2>(const Particles<2>&, const std::vector<std::size_t>&, Real, Real,
@@ -210,6 +242,14 @@ template Real surge_front_directed<2>(const Particles<2>&, Real, int, bool, Real
 template Real surge_front_directed<3>(const Particles<3>&, Real, int, bool, Real);
 template std::vector<std::size_t> bulk_fluid<2>(const Particles<2>&, Real);
 template std::vector<std::size_t> bulk_fluid<3>(const Particles<3>&, Real);
+template std::vector<std::size_t> bulk_fluid<2>(const Particles<2>&, Real,
+                                                const std::vector<std::size_t>&);
+template std::vector<std::size_t> bulk_fluid<3>(const Particles<3>&, Real,
+                                                const std::vector<std::size_t>&);
+template Real gauge_water_level<2>(const Particles<2>&, Real, Real, std::optional<Real>);
+template Real gauge_water_level<3>(const Particles<3>&, Real, Real, std::optional<Real>);
+template class FrontColumns<2>;
+template class FrontColumns<3>;
 template Real water_level<2>(const Particles<2>&, Real, Real);
 template Real water_level<3>(const Particles<3>&, Real, Real);
 template Real water_level<2>(const Particles<2>&, const std::vector<std::size_t>&, Real, Real);

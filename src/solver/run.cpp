@@ -11,10 +11,9 @@
 #include "sluice/io/snapshot_writer.hpp"
 #include "sluice/io/summary.hpp"
 #include "sluice/physics/initial_conditions.hpp"
-#include "sluice/physics/probes.hpp"
-#include "sluice/physics/wall_loads.hpp"
 #include "sluice/solver/simulation.hpp"
 
+#include "probe_sampling.hpp"
 #include "stop_signals.hpp"
 
 #include <tbb/global_control.h>
@@ -33,104 +32,6 @@
 namespace sluice {
 
 namespace {
-
-// The wall particles of a force probe's region: the half-space behind a tank face (its
-// layers and the corners it shares) or an obstacle box, cut to the probe's lo/hi.
-template <int D>
-std::vector<std::size_t> force_region(const CaseConfig& cfg, const ProbeConfig& probe,
-                                      const Particles<D>& P) {
-    const double inf = std::numeric_limits<double>::infinity();
-    double size = 0;
-    for (int a = 0; a < D; ++a)
-        size = std::max(size, cfg.domain_hi[a] - cfg.domain_lo[a]);
-    const double eps = 1e-9 * size;
-    Vec<D> lo, hi;
-    for (int a = 0; a < D; ++a) {
-        const auto k = static_cast<std::size_t>(a);
-        double l = -inf, h = inf;
-        if (probe.wall.box >= 0) {
-            const WallBox& b = cfg.boxes[static_cast<std::size_t>(probe.wall.box)];
-            l = b.lo[k] - eps;
-            h = b.hi[k] + eps;
-        } else if (a == probe.wall.face_axis) {
-            if (probe.wall.face_high)
-                l = cfg.tank_hi[k] - eps;
-            else
-                h = cfg.tank_lo[k] + eps;
-        }
-        if (probe.lo)
-            l = std::max(l, (*probe.lo)[k]);
-        if (probe.hi)
-            h = std::min(h, (*probe.hi)[k]);
-        lo[a] = Real(l);
-        hi[a] = Real(h);
-    }
-    return wall_particles_in(P, lo, hi);
-}
-
-// The wall-load probes' pair terms: the momentum equation's own parameters.
-template <int D>
-WallLoadParams<D> wall_load_params(const Simulation<D>& sim) {
-    const MomentumParams<D>& m = sim.momentum();
-    WallLoadParams<D> w;
-    w.p_floor = m.p_floor;
-    w.p_gauge = m.p_floor; // the background pressure
-    w.mu = m.mu;
-    w.wall_viscous = m.wall_viscous;
-    w.alpha = m.alpha;
-    w.wall_artificial = m.wall_artificial;
-    w.c0 = m.c0;
-    w.h = m.h;
-    w.riemann = sim.config().dissipation == Dissipation::riemann;
-    w.no_slip = sim.config().no_slip;
-    return w;
-}
-
-// One row of a probe's CSV (after the time): one value, or a force probe's components.
-template <int D>
-std::vector<double> probe_value(const Simulation<D>& sim, const Particles<D>& P,
-                                const ProbeConfig& probe) {
-    const CaseConfig& cfg = sim.config();
-    const double dx = cfg.dx;
-    switch (probe.type) {
-    case ProbeType::pressure: {
-        Vec<D> point;
-        for (int d = 0; d < D; ++d)
-            point[d] = Real(probe.position[d]);
-        if (probe.diameter <= 0)
-            return {double(pressure_probe(P, sim.kernel(), point))};
-        point[probe.sensor_axis] = Real(probe.sensor_surface);
-        return {double(wall_pressure_sensor(P, sim.kernel(), point, probe.sensor_axis,
-                                            Real(probe.diameter), Real(dx / 4)))};
-    }
-    case ProbeType::water_level: {
-        const auto bulk = bulk_fluid(P, Real(dx));
-        if (probe.y)
-            return {double(water_level_at(P, bulk, Real(dx), Real(probe.x), Real(*probe.y)))};
-        return {double(water_level(P, bulk, Real(dx), Real(probe.x)))};
-    }
-    case ProbeType::surge_front:
-        return {double(surge_front_directed(P, Real(dx), probe.direction_axis,
-                                            probe.direction_negative, Real(probe.min_thickness)))};
-    case ProbeType::force: {
-        Vec<D> about = Vec<D>::Zero();
-        if (probe.moment_about)
-            for (int d = 0; d < D; ++d)
-                about[d] = Real((*probe.moment_about)[static_cast<std::size_t>(d)]);
-        const WallLoad load =
-            wall_load(P, sim.kernel(), wall_load_params(sim), force_region(cfg, probe, P), about);
-        std::vector<double> row(load.force.begin(), load.force.begin() + D);
-        if (probe.moment_about) {
-            if (D == 3)
-                row.insert(row.end(), load.moment.begin(), load.moment.end());
-            else
-                row.push_back(load.moment[2]);
-        }
-        return row;
-    }
-    }
-    return {std::nan("")};
-}
 
 nlohmann::json census_json(const NeighbourCensus& n) {
     return {{"fluid_particles", n.fluid},   {"wall_particles", n.wall},
@@ -333,45 +234,35 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         out_next = start.out_next;
         last_output_time = start.last_output_time;
     }
-    // Every rank takes the same decisions (same time); the particles are gathered on rank 0
-    // only when something is due.
+    // Every rank takes the same decisions (same time). The probes are evaluated where the
+    // particles are (probe_sampling.hpp); the particles are gathered on rank 0 only for a
+    // snapshot.
     auto sample = [&](bool force) {
         const double t = sim.time();
         const double eps = 1e-12 * cfg.end_time;
         // An "every_step" probe is due after every step (and at the start).
         // Never twice at the same time (the final forced sample after an every-step one).
-        const auto due = [&](std::size_t k) {
-            return (force || cfg.probes[k].every_step || t >= probe_next[k] - eps) &&
-                   t != probe_last[k];
-        };
-        bool probes_due = false;
+        std::vector<std::size_t> due;
         for (std::size_t k = 0; k < cfg.probes.size(); ++k)
-            probes_due = probes_due || due(k);
+            if ((force || cfg.probes[k].every_step || t >= probe_next[k] - eps) &&
+                t != probe_last[k])
+                due.push_back(k);
         const bool snap_due =
             (force || t >= out_next - eps) && cfg.snapshots && t != last_output_time;
-        std::optional<Particles<D>> all;
-        if (probes_due || snap_due)
-            all = sim.gather_particles();
-        // Before the first step the wall particles hold no extrapolated pressure yet: the
-        // probes (wall forces, area sensors) see the state the first step will see, in a copy
-        // (the snapshot keeps the state as it is).
-        std::optional<Particles<D>> refreshed;
-        if (root && probes_due && sim.steps() == 0 && cfg.walls == WallModel::dummy) {
-            refreshed = *all;
-            Vec<D> g;
-            for (int d = 0; d < D; ++d)
-                g[d] = Real(cfg.gravity[static_cast<std::size_t>(d)]);
-            refresh_dummy_walls(*refreshed, sim.kernel(), sim.eos(), g, Real(std::pow(cfg.dx, D)));
-        }
-        const Particles<D>* probe_state = refreshed ? &*refreshed : all ? &*all : nullptr;
-        for (std::size_t k = 0; k < cfg.probes.size(); ++k)
-            if (due(k)) {
+        if (!due.empty()) {
+            const auto rows = sample_probes(sim, due);
+            for (std::size_t n = 0; n < due.size(); ++n) {
+                const std::size_t k = due[n];
                 if (root)
-                    probe_files->write(k, t, probe_value(sim, *probe_state, cfg.probes[k]));
+                    probe_files->write(k, t, rows[n]);
                 probe_last[k] = t;
                 while (probe_next[k] <= t + eps)
                     probe_next[k] += probe_every[k];
             }
+        }
+        std::optional<Particles<D>> all;
+        if (snap_due)
+            all = sim.gather_particles();
         if (force || t >= out_next - eps) {
             if (snap_due && root)
                 log.debug("snapshot {} at t = {:.6g} s (step {})",

@@ -13,10 +13,11 @@ run() { # name ranks threads case args...
     local name=$1 ranks=$2 threads=$3 case=$4
     shift 4
     local out="$work/$name/${ranks}x${threads}"
+    [[ $case == */* ]] && case="$src/$case" || case="$src/cases/$case" # tests/data/... or cases/
     if [[ $ranks == 1 ]]; then
-        "$exe" run "$src/cases/$case" --out "$out" --threads "$threads" -q "$@"
+        "$exe" run "$case" --out "$out" --threads "$threads" -q "$@"
     else
-        "$mpiexec" --oversubscribe -np "$ranks" "$exe" run "$src/cases/$case" --out "$out" \
+        "$mpiexec" --oversubscribe -np "$ranks" "$exe" run "$case" --out "$out" \
             --threads "$threads" -q "$@"
     fi
 }
@@ -51,6 +52,9 @@ check_case() { # name case args...
 
 check_case dam_break_2d dam_break_2d.toml --set particles.dx=0.02 --set time.end_time=0.1 \
     --set time.output_interval=0.025 --set runtime.rebalance_every=25
+# Every probe kind (point and area pressure, forces and moments on faces, a panel and an
+# obstacle, a level, fronts along x and y), sampled every step where the particles are.
+check_case probe_kinds_2d tests/data/probe_kinds_2d.toml --set runtime.rebalance_every=20
 check_case dam_break_3d dam_break_3d.toml --set time.end_time=0.02 \
     --set time.output_interval=0.005 --set runtime.rebalance_every=15 \
     --set 'runtime.initial_decomposition="key-range"'

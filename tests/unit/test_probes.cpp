@@ -106,3 +106,59 @@ TEST_CASE("3-D: the vertical axis is z") {
     CHECK(surge_front(ps, dx) == doctest::Approx(1.0).epsilon(1e-12));
     CHECK(bulk_fluid(ps, dx).size() == 120);
 }
+
+TEST_CASE("surge front: columns binned in parts and merged give the front of the whole") {
+    // A tilted block with a thin tip and a droplet, split between three "ranks" in an
+    // interleaved way (every third particle), merged in two orders.
+    const Real dx = 0.02;
+    Particles<2> ps;
+    fill_block(ps, 0, 0.6, 0.3, dx);
+    for (int i = 0; i < 5; ++i) // a tip two particles deep
+        for (int j = 0; j < 2; ++j)
+            add(ps, Kind::fluid, Vec<2>(0.6 + (i + 0.5) * dx, (j + 0.5) * dx), dx);
+    add(ps, Kind::fluid, Vec<2>(1.2, 0.5), dx); // a droplet: one particle, not a front
+    add(ps, Kind::wall, Vec<2>(1.5, 0.01), dx);
+    const Real whole = surge_front_directed(ps, dx, 0, false, 2 * dx);
+    CHECK(whole == doctest::Approx(0.6 + 5 * dx).epsilon(1e-12));
+
+    std::vector<Particles<2>> parts(3);
+    for (std::size_t i = 0; i < ps.size(); ++i)
+        parts[i % 3].push_back(ps.id[i], ps.kind[i], ps.x[i], ps.v[i], ps.rho[i], ps.mass[i]);
+    for (const std::vector<int>& order : {std::vector<int>{0, 1, 2}, std::vector<int>{2, 0, 1}}) {
+        FrontColumns<2> merged(dx, 0, false);
+        for (int r : order) {
+            FrontColumns<2> mine(dx, 0, false);
+            mine.add(parts[static_cast<std::size_t>(r)], parts[static_cast<std::size_t>(r)].size());
+            for (const auto& [key, c] : mine.columns())
+                merged.merge(key, c);
+        }
+        CHECK(merged.front(2 * dx) == whole); // bit for bit
+    }
+    // Downwards ("-y"): the lowest particle's cell edge, 0.
+    CHECK(surge_front_directed(ps, dx, 1, true, 2 * dx) == doctest::Approx(0).epsilon(1e-12));
+}
+
+TEST_CASE("gauge level: spray above the column is not its bulk; only the column is read") {
+    const Real dx = 0.02;
+    Particles<2> ps;
+    fill_block(ps, 0, 1, 0.3, dx);
+    add(ps, Kind::fluid, Vec<2>(0.5, 0.6), dx); // a droplet above the gauge
+    CHECK(gauge_water_level(ps, dx, Real(0.5), std::nullopt) ==
+          doctest::Approx(0.3).epsilon(1e-12));
+    // The same value from the column's particles alone, in any order (the run evaluates a
+    // gauge on the particles of its footprint only).
+    Particles<2> column;
+    for (std::size_t i = ps.size(); i-- > 0;)
+        if (std::abs(ps.x[i][0] - 0.5) <= 2 * dx)
+            column.push_back(ps.id[i], ps.kind[i], ps.x[i], ps.v[i], ps.rho[i], ps.mass[i]);
+    CHECK(gauge_water_level(column, dx, Real(0.5), std::nullopt) ==
+          gauge_water_level(ps, dx, Real(0.5), std::nullopt));
+    // A column of spray alone, 3 particles linked vertically over a dry bed: that is its bulk.
+    Particles<2> dry;
+    for (int j = 0; j < 3; ++j)
+        add(dry, Kind::fluid, Vec<2>(0.5, 0.5 + j * dx), dx);
+    add(dry, Kind::fluid, Vec<2>(0.5, 0.9), dx); // and a smaller droplet above it
+    CHECK(gauge_water_level(dry, dx, Real(0.5), std::nullopt) ==
+          doctest::Approx(0.5 + 2 * dx + dx / 2).epsilon(1e-12));
+    CHECK(std::isnan(gauge_water_level(dry, dx, Real(0.2), std::nullopt)));
+}

@@ -3,12 +3,16 @@
 // Pure functions over all particles (O(N) per call, no neighbour structure needed); only fluid
 // particles are measured. The vertical axis is the last one: y in 2-D, z in 3-D.
 #include "sluice/core/particles.hpp"
+#include "sluice/physics/cell_hash.hpp"
 #include "sluice/physics/kernels.hpp"
 
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <type_traits>
+#include <unordered_map>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -53,6 +57,10 @@ Real pressure_probe(const Particles<D>& ps, const K& kernel, const Vec<D>& point
 // are therefore excluded. Empty when there is no fluid. O(N) with a cell hash + union-find.
 template <int D>
 std::vector<std::size_t> bulk_fluid(const Particles<D>& ps, Real dx);
+// The same among the fluid particles `candidates` (indices into ps, ascending) only.
+template <int D>
+std::vector<std::size_t> bulk_fluid(const Particles<D>& ps, Real dx,
+                                    const std::vector<std::size_t>& candidates);
 
 // The functions below find the bulk themselves; when several probes are sampled at the same
 // time, compute bulk_fluid() once and pass it to the overloads taking `bulk`.
@@ -71,6 +79,17 @@ Real water_level(const Particles<D>& ps, const std::vector<std::size_t>& bulk, R
 template <int D>
 Real water_level_at(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx, Real x,
                     Real y);
+
+// The level a water-level gauge reads (the run's `water_level` probes). The gauge's column is
+// the fluid with |x_i - x| <= dx (with `y`, in 3-D, also |y_i - y| <= dx; without, across the
+// whole width); the column's bulk is its largest set of particles linked within 1.5 dx (as
+// bulk_fluid, over the column alone); the level is its highest particle plus dx/2. Spray
+// above the column is not its bulk. The reading depends on the column's particles only, so it
+// can be evaluated on them alone, wherever the rest of the fluid is held; it differs from
+// water_level() over the tank's bulk only when a droplet in the column is linked to the bulk
+// through particles outside the column alone. NaN when the column holds no fluid.
+template <int D>
+Real gauge_water_level(const Particles<D>& ps, Real dx, Real x, std::optional<Real> y);
 
 // Surge front (the original definition, kept for code that asks for it): the largest x over
 // the bulk fluid, plus dx/2 (the cell edge, as above). NaN when there is no fluid.
@@ -93,8 +112,46 @@ template <int D>
 Real surge_front_directed(const Particles<D>& ps, Real dx, int axis, bool negative,
                           Real min_thickness);
 
+// surge_front_directed in two parts, so that each rank can bin its own particles and one rank
+// merge the columns: a column's count adds up and its furthest position is a maximum, so the
+// front is the same for any split of the particles and any merge order.
+template <int D>
+class FrontColumns {
+public:
+    struct Column {
+        long count = 0;
+        Real furthest = -std::numeric_limits<Real>::infinity(); // along the signed direction
+    };
+    FrontColumns(Real dx, int axis, bool negative);
+    // Bins the fluid particles [0, end) of ps.
+    void add(const Particles<D>& ps, std::size_t end);
+    // Adds a column binned elsewhere.
+    void merge(const CellKey<D>& key, const Column& c);
+    [[nodiscard]] const std::unordered_map<CellKey<D>, Column, CellKeyHash<D>>& columns() const {
+        return columns_;
+    }
+    // The front: the furthest position of a column holding at least
+    // max(1, round(min_thickness / dx)) particles, plus dx/2 (a coordinate on the axis); NaN
+    // when no column is that thick.
+    [[nodiscard]] Real front(Real min_thickness) const;
+
+private:
+    Real dx_;
+    int axis_, depth_;
+    Real sign_;
+    std::unordered_map<CellKey<D>, Column, CellKeyHash<D>> columns_;
+};
+
 extern template std::vector<std::size_t> bulk_fluid<2>(const Particles<2>&, Real);
 extern template std::vector<std::size_t> bulk_fluid<3>(const Particles<3>&, Real);
+extern template std::vector<std::size_t> bulk_fluid<2>(const Particles<2>&, Real,
+                                                       const std::vector<std::size_t>&);
+extern template std::vector<std::size_t> bulk_fluid<3>(const Particles<3>&, Real,
+                                                       const std::vector<std::size_t>&);
+extern template Real gauge_water_level<2>(const Particles<2>&, Real, Real, std::optional<Real>);
+extern template Real gauge_water_level<3>(const Particles<3>&, Real, Real, std::optional<Real>);
+extern template class FrontColumns<2>;
+extern template class FrontColumns<3>;
 extern template Real water_level<2>(const Particles<2>&, Real, Real);
 extern template Real water_level<3>(const Particles<3>&, Real, Real);
 extern template Real water_level_at<2>(const Particles<2>&, const std::vector<std::size_t>&, Real,

@@ -1,0 +1,261 @@
+// Probes evaluated without gathering the particles: footprints, the per-rank selection, the
+// merge on rank 0 and the probe functions (physics/probes.hpp, physics/wall_loads.hpp).
+#include "probe_sampling.hpp"
+
+#include "particle_messages.hpp"
+
+#include "sluice/physics/probes.hpp"
+#include "sluice/physics/wall_loads.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <variant>
+
+namespace sluice {
+namespace {
+
+template <int D>
+struct Box {
+    Vec<D> lo, hi;
+    [[nodiscard]] bool holds(const Vec<D>& x) const {
+        for (int a = 0; a < D; ++a)
+            if (!(x[a] >= lo[a] && x[a] <= hi[a]))
+                return false;
+        return true;
+    }
+    [[nodiscard]] Box grown(Real by) const { return {lo.array() - by, hi.array() + by}; }
+};
+
+// The region of a force probe: the half-space behind a tank face (its layers and the corners
+// it shares) or an obstacle box, cut to the probe's lo/hi.
+template <int D>
+Box<D> force_box(const CaseConfig& cfg, const ProbeConfig& probe) {
+    const double inf = std::numeric_limits<double>::infinity();
+    double size = 0;
+    for (int a = 0; a < D; ++a)
+        size = std::max(size, cfg.domain_hi[a] - cfg.domain_lo[a]);
+    const double eps = 1e-9 * size;
+    Box<D> box;
+    for (int a = 0; a < D; ++a) {
+        const auto k = static_cast<std::size_t>(a);
+        double l = -inf, h = inf;
+        if (probe.wall.box >= 0) {
+            const WallBox& b = cfg.boxes[static_cast<std::size_t>(probe.wall.box)];
+            l = b.lo[k] - eps;
+            h = b.hi[k] + eps;
+        } else if (a == probe.wall.face_axis) {
+            if (probe.wall.face_high)
+                l = cfg.tank_hi[k] - eps;
+            else
+                h = cfg.tank_lo[k] + eps;
+        }
+        if (probe.lo)
+            l = std::max(l, (*probe.lo)[k]);
+        if (probe.hi)
+            h = std::min(h, (*probe.hi)[k]);
+        box.lo[a] = Real(l);
+        box.hi[a] = Real(h);
+    }
+    return box;
+}
+
+// Every particle a probe's value depends on lies in its footprint. The kernel sums of the
+// pressure probes and the wall loads reach one support from the points and wall particles they
+// sum for; before the first step the wall particles they read are refreshed from the fluid
+// (refresh_dummy_walls), one support further. A gauge reads its column (+-dx, a margin of
+// another dx); the probe function applies the exact bounds.
+template <int D>
+Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
+    const Real inf = std::numeric_limits<Real>::infinity();
+    const Real reach = 2 * std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+    const Real dx = Real(sim.config().dx);
+    Box<D> box{Vec<D>::Constant(-inf), Vec<D>::Constant(inf)};
+    switch (probe.type) {
+    case ProbeType::pressure:
+        for (int a = 0; a < D; ++a) {
+            const Real c = a == probe.sensor_axis
+                               ? Real(probe.sensor_surface)
+                               : Real(probe.position[static_cast<std::size_t>(a)]);
+            box.lo[a] = c;
+            box.hi[a] = c;
+        }
+        return box.grown(reach + Real(probe.diameter) / 2);
+    case ProbeType::water_level:
+        box.lo[0] = Real(probe.x) - 2 * dx;
+        box.hi[0] = Real(probe.x) + 2 * dx;
+        if (D == 3 && probe.y) {
+            box.lo[1] = Real(*probe.y) - 2 * dx;
+            box.hi[1] = Real(*probe.y) + 2 * dx;
+        }
+        return box;
+    case ProbeType::force:
+        return force_box<D>(sim.config(), probe).grown(reach);
+    case ProbeType::surge_front:
+        break; // binned columns, not a footprint
+    }
+    return box;
+}
+
+// The wall-load probes' pair terms: the momentum equation's own parameters.
+template <int D>
+WallLoadParams<D> wall_load_params(const Simulation<D>& sim) {
+    const MomentumParams<D>& m = sim.momentum();
+    WallLoadParams<D> w;
+    w.p_floor = m.p_floor;
+    w.p_gauge = m.p_floor; // the background pressure
+    w.mu = m.mu;
+    w.wall_viscous = m.wall_viscous;
+    w.alpha = m.alpha;
+    w.wall_artificial = m.wall_artificial;
+    w.c0 = m.c0;
+    w.h = m.h;
+    w.riemann = sim.config().dissipation == Dissipation::riemann;
+    w.no_slip = sim.config().no_slip;
+    return w;
+}
+
+// One row of a probe's CSV (after the time) from the particles of its footprint (a force
+// probe: its components, then its moment); a surge front from its merged columns.
+template <int D>
+std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
+                              const ProbeConfig& probe) {
+    const CaseConfig& cfg = sim.config();
+    const Real dx = Real(cfg.dx);
+    switch (probe.type) {
+    case ProbeType::pressure: {
+        Vec<D> point;
+        for (int d = 0; d < D; ++d)
+            point[d] = Real(probe.position[static_cast<std::size_t>(d)]);
+        if (probe.diameter <= 0)
+            return {double(pressure_probe(P, sim.kernel(), point))};
+        point[probe.sensor_axis] = Real(probe.sensor_surface);
+        return {double(wall_pressure_sensor(P, sim.kernel(), point, probe.sensor_axis,
+                                            Real(probe.diameter), dx / 4))};
+    }
+    case ProbeType::water_level: {
+        std::optional<Real> y;
+        if (probe.y)
+            y = Real(*probe.y);
+        return {double(gauge_water_level(P, dx, Real(probe.x), y))};
+    }
+    case ProbeType::force: {
+        Vec<D> about = Vec<D>::Zero();
+        if (probe.moment_about)
+            for (int d = 0; d < D; ++d)
+                about[d] = Real((*probe.moment_about)[static_cast<std::size_t>(d)]);
+        const Box<D> region = force_box<D>(cfg, probe);
+        const WallLoad load = wall_load(P, sim.kernel(), wall_load_params(sim),
+                                        wall_particles_in(P, region.lo, region.hi), about);
+        std::vector<double> row(load.force.begin(), load.force.begin() + D);
+        if (probe.moment_about) {
+            if (D == 3)
+                row.insert(row.end(), load.moment.begin(), load.moment.end());
+            else
+                row.push_back(load.moment[2]);
+        }
+        return row;
+    }
+    case ProbeType::surge_front:
+        break;
+    }
+    return {std::nan("")};
+}
+
+template <int D>
+FrontColumns<D> front_columns(const CaseConfig& cfg, const ProbeConfig& probe) {
+    return FrontColumns<D>(Real(cfg.dx), probe.direction_axis, probe.direction_negative);
+}
+
+} // namespace
+
+template <int D>
+std::vector<std::vector<double>> sample_probes(const Simulation<D>& sim,
+                                               const std::vector<std::size_t>& due) {
+    const CaseConfig& cfg = sim.config();
+    const Particles<D>& P = sim.particles();
+    std::vector<Box<D>> boxes;
+    std::vector<FrontColumns<D>> fronts;
+    for (std::size_t k : due) {
+        const ProbeConfig& probe = cfg.probes[k];
+        if (probe.type == ProbeType::surge_front) {
+            fronts.push_back(front_columns<D>(cfg, probe));
+            fronts.back().add(P, sim.owned());
+        } else {
+            boxes.push_back(footprint(sim, probe));
+        }
+    }
+    // This rank's message: how many particles, the particles of any footprint (each once, in
+    // this rank's order), then each front's columns.
+    tasks::Bytes mine, picked;
+    std::uint64_t count = 0;
+    for (std::size_t i = 0; i < sim.owned(); ++i)
+        if (std::any_of(boxes.begin(), boxes.end(),
+                        [&](const Box<D>& b) { return b.holds(P.x[i]); })) {
+            messages::pack_particle(P, i, picked);
+            ++count;
+        }
+    tasks::put(mine, count);
+    mine.insert(mine.end(), picked.begin(), picked.end());
+    for (const auto& f : fronts) {
+        tasks::put(mine, static_cast<std::uint64_t>(f.columns().size()));
+        for (const auto& [key, c] : f.columns()) {
+            tasks::put(mine, key);
+            tasks::put(mine, c.count);
+            tasks::put(mine, c.furthest);
+        }
+    }
+    const auto gathered = sim.comm().gather(mine, 0);
+    if (sim.comm().rank() != 0)
+        return {};
+
+    // Ranks own consecutive runs of the curve: rank order is the order of a full gather.
+    Particles<D> local;
+    std::vector<FrontColumns<D>> merged;
+    for (std::size_t k : due)
+        if (cfg.probes[k].type == ProbeType::surge_front)
+            merged.push_back(front_columns<D>(cfg, cfg.probes[k]));
+    for (const auto& b : gathered) {
+        std::size_t pos = 0;
+        const auto n = tasks::take<std::uint64_t>(b, pos);
+        const std::size_t bytes = n * messages::particle_bytes<D>;
+        messages::unpack_particles<D>(std::span<const std::byte>(b).subspan(pos, bytes), local);
+        pos += bytes;
+        for (auto& f : merged) {
+            const auto columns = tasks::take<std::uint64_t>(b, pos);
+            for (std::uint64_t c = 0; c < columns; ++c) {
+                const auto key = tasks::take<CellKey<D>>(b, pos);
+                typename FrontColumns<D>::Column col;
+                col.count = tasks::take<long>(b, pos);
+                col.furthest = tasks::take<Real>(b, pos);
+                f.merge(key, col);
+            }
+        }
+    }
+    // Before the first step the wall particles hold no extrapolated pressure yet: the probes
+    // (wall forces, area sensors) see the state the first step will see.
+    if (sim.steps() == 0 && cfg.walls == WallModel::dummy) {
+        Vec<D> g;
+        for (int d = 0; d < D; ++d)
+            g[d] = Real(cfg.gravity[static_cast<std::size_t>(d)]);
+        refresh_dummy_walls(local, sim.kernel(), sim.eos(), g, Real(std::pow(cfg.dx, D)));
+    }
+    std::vector<std::vector<double>> rows;
+    std::size_t front = 0;
+    for (std::size_t k : due) {
+        const ProbeConfig& probe = cfg.probes[k];
+        if (probe.type == ProbeType::surge_front)
+            rows.push_back({double(merged[front++].front(Real(probe.min_thickness)))});
+        else
+            rows.push_back(probe_row(sim, local, probe));
+    }
+    return rows;
+}
+
+template std::vector<std::vector<double>> sample_probes<2>(const Simulation<2>&,
+                                                           const std::vector<std::size_t>&);
+template std::vector<std::vector<double>> sample_probes<3>(const Simulation<3>&,
+                                                           const std::vector<std::size_t>&);
+
+} // namespace sluice
