@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
 # scripts/plot on a short real run: `probes`, `history`, `snapshot` and `timeline` each write
 # PNG files that are real pictures (at least 300 x 100 pixels, more than 16 colours, no colour
-# covering 99 % of the image), not an empty canvas. Skipped (exit code 77) where Debian's
-# python3 lacks matplotlib, h5py, numpy or PIL. Usage: plot_outputs.sh <sluice exe> <source dir>
+# covering 99 % of the image), not an empty canvas. `probes` also on the wall-load probes
+# (force with a moment, area sensor, every-step sampling) in 2-D (a copy of dam_break_2d with
+# them added: units per metre of width) and 3-D (cases/dam_break_3d.toml, which carries them):
+# the line it prints for each panel must name the kind, the sensor size and the unit.
+# Skipped (exit code 77) where Debian's python3 lacks matplotlib, h5py, numpy or PIL.
+# Usage: plot_outputs.sh <sluice exe> <source dir>
 set -u
 exe=$(realpath "$1")
 src=$(realpath "$2")
@@ -50,6 +54,45 @@ plot probes probes "$out"
 plot history history "$out"
 plot snapshot snapshot "$out"
 plot timeline timeline "$work/trace.json"
+
+# The wall-load probes. `probes` prints one line per panel: "probe NAME: what [unit]...".
+expect() { # name regex: a line of plot NAME's output must match
+    grep -Eq "$2" "$work/$1.txt" || fail "plot $1: no line matches '$2': $(cat "$work/$1.txt")"
+}
+cp "$src/cases/dam_break_2d.toml" "$work/loads_2d.toml"
+cat >>"$work/loads_2d.toml" <<'TOML'
+
+[[probes]]
+name = "back_wall"
+type = "force"
+face = "x-"
+moment_about = [0.0, 0.0]
+interval = "every_step"
+
+[[probes]]
+name = "back_wall_p"
+type = "pressure"
+position = [0.0, 0.1]
+diameter = 0.04
+interval = "every_step"
+TOML
+"$exe" run "$work/loads_2d.toml" --out "$work/loads_2d" --threads 1 --quiet \
+    --set particles.dx=0.02 --set time.end_time=0.02 2>/dev/null || fail "2-D wall-load run: exit code $?"
+plot loads_2d probes "$work/loads_2d"
+expect loads_2d '^probe back_wall: force on tank face x- \[N/m\]: Fx Fy; [0-9]+ samples, every step$'
+expect loads_2d '^probe back_wall: moment about \(0, 0\) m \[N m/m\]: Mz$'
+expect loads_2d '^probe back_wall_p: area sensor \(40 mm segment\) on the wall at \(0, 0.1\) m \[Pa\]'
+expect loads_2d '^probe p2_right_wall: point probe at \(1.595, 0.02\) m \[Pa\]; [0-9]+ samples, every 0.0002 s$'
+
+"$exe" run "$src/cases/dam_break_3d.toml" --out "$work/loads_3d" --threads 1 --quiet \
+    --set time.end_time=0.02 2>/dev/null || fail "3-D run: exit code $?"
+plot loads_3d probes "$work/loads_3d"
+expect loads_3d '^probe far_wall_force: force on tank face x\+ \[N\]: Fx Fy Fz;'
+expect loads_3d '^probe far_wall_force: moment about \(0.6, 0.1, 0\) m \[N m\]: Mx My Mz$'
+expect loads_3d '^probe far_wall_p_area: area sensor \(⌀ 40 mm\) on face x\+ at \(0.6, 0.1, 0.03\) m \[Pa\]'
+expect loads_3d '^probe far_wall_p_point: point probe at \(0.59, 0.1, 0.03\) m \[Pa\]'
+expect loads_3d '^probe level_x040_y005: point gauge at x = 0.4 m, y = 0.05 m \[m\]'
+expect loads_3d '^probe front_bulk: front along \+x, columns ≥ 60 mm deep \[m\]'
 
 [ $failures -eq 0 ] && echo "plot outputs: all checks passed"
 exit $((failures > 0))
