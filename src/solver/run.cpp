@@ -231,6 +231,9 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     double last_output_time = -1;
     if (resumed) {
         probe_next = start.probe_next;
+        // The checkpoint was written after the sample at its time: every probe due then
+        // (an "every_step" one always) has its row in the file already.
+        probe_last.assign(cfg.probes.size(), sim.time());
         out_next = start.out_next;
         last_output_time = start.last_output_time;
     }
