@@ -181,12 +181,14 @@ Real water_level_at(const Particles<D>& ps, const std::vector<std::size_t>& bulk
 
 template <int D>
 Real gauge_water_level(const Particles<D>& ps, Real dx, Real x, std::optional<Real> y) {
-    std::vector<std::size_t> column;
+    const Real reach = gauge_bulk_reach * dx;
+    std::vector<std::size_t> slab;
     for (std::size_t i = 0; i < ps.size(); ++i)
-        if (ps.kind[i] == Kind::fluid && std::abs(ps.x[i][0] - x) <= dx &&
-            !(D == 3 && y && std::abs(ps.x[i][1] - *y) > dx))
-            column.push_back(i);
-    return water_level(ps, bulk_fluid(ps, dx, column), dx, x);
+        if (ps.kind[i] == Kind::fluid && std::abs(ps.x[i][0] - x) <= reach &&
+            !(D == 3 && y && std::abs(ps.x[i][1] - *y) > reach))
+            slab.push_back(i);
+    const auto bulk = bulk_fluid(ps, dx, slab);
+    return D == 3 && y ? water_level_at(ps, bulk, dx, x, *y) : water_level(ps, bulk, dx, x);
 }
 
 template <int D>

@@ -64,8 +64,8 @@ Box<D> force_box(const CaseConfig& cfg, const ProbeConfig& probe) {
 // Every particle a probe's value depends on lies in its footprint. The kernel sums of the
 // pressure probes and the wall loads reach one support from the points and wall particles they
 // sum for; before the first step the wall particles they read are refreshed from the fluid
-// (refresh_dummy_walls), one support further. A gauge reads its column (+-dx, a margin of
-// another dx); the probe function applies the exact bounds.
+// (refresh_dummy_walls), one support further. A gauge reads its surroundings (gauge_bulk_reach dx,
+// a margin of another dx); the probe function applies the exact bounds.
 template <int D>
 Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
     const Real inf = std::numeric_limits<Real>::infinity();
@@ -82,14 +82,16 @@ Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
             box.hi[a] = c;
         }
         return box.grown(reach + Real(probe.diameter) / 2);
-    case ProbeType::water_level:
-        box.lo[0] = Real(probe.x) - 2 * dx;
-        box.hi[0] = Real(probe.x) + 2 * dx;
+    case ProbeType::water_level: {
+        const Real half = Real(gauge_bulk_reach + 1) * dx; // the probe applies the exact bounds
+        box.lo[0] = Real(probe.x) - half;
+        box.hi[0] = Real(probe.x) + half;
         if (D == 3 && probe.y) {
-            box.lo[1] = Real(*probe.y) - 2 * dx;
-            box.hi[1] = Real(*probe.y) + 2 * dx;
+            box.lo[1] = Real(*probe.y) - half;
+            box.hi[1] = Real(*probe.y) + half;
         }
         return box;
+    }
     case ProbeType::force:
         return force_box<D>(sim.config(), probe).grown(reach);
     case ProbeType::surge_front:

@@ -145,11 +145,11 @@ TEST_CASE("gauge level: spray above the column is not its bulk; only the column 
     add(ps, Kind::fluid, Vec<2>(0.5, 0.6), dx); // a droplet above the gauge
     CHECK(gauge_water_level(ps, dx, Real(0.5), std::nullopt) ==
           doctest::Approx(0.3).epsilon(1e-12));
-    // The same value from the column's particles alone, in any order (the run evaluates a
+    // The same value from the particles around the gauge alone, in any order (the run evaluates a
     // gauge on the particles of its footprint only).
     Particles<2> column;
     for (std::size_t i = ps.size(); i-- > 0;)
-        if (std::abs(ps.x[i][0] - 0.5) <= 2 * dx)
+        if (std::abs(ps.x[i][0] - 0.5) <= (gauge_bulk_reach + 1) * dx)
             column.push_back(ps.id[i], ps.kind[i], ps.x[i], ps.v[i], ps.rho[i], ps.mass[i]);
     CHECK(gauge_water_level(column, dx, Real(0.5), std::nullopt) ==
           gauge_water_level(ps, dx, Real(0.5), std::nullopt));

@@ -80,14 +80,17 @@ template <int D>
 Real water_level_at(const Particles<D>& ps, const std::vector<std::size_t>& bulk, Real dx, Real x,
                     Real y);
 
-// The level a water-level gauge reads (the run's `water_level` probes). The gauge's column is
-// the fluid with |x_i - x| <= dx (with `y`, in 3-D, also |y_i - y| <= dx; without, across the
-// whole width); the column's bulk is its largest set of particles linked within 1.5 dx (as
-// bulk_fluid, over the column alone); the level is its highest particle plus dx/2. Spray
-// above the column is not its bulk. The reading depends on the column's particles only, so it
-// can be evaluated on them alone, wherever the rest of the fluid is held; it differs from
-// water_level() over the tank's bulk only when a droplet in the column is linked to the bulk
-// through particles outside the column alone. NaN when the column holds no fluid.
+// The level a water-level gauge reads (the run's `water_level` probes): the highest particle
+// of the gauge's column (|x_i - x| <= dx; with `y`, in 3-D, also |y_i - y| <= dx; without,
+// across the whole width) that belongs to the bulk of the gauge's surroundings, plus dx/2.
+// The surroundings are the fluid within gauge_bulk_reach dx of the gauge (the same bounds
+// widened); their bulk is their largest set of particles linked within 1.5 dx (bulk_fluid
+// over them alone). Spray above the gauge is not bulk; the surroundings' width lets the bulk
+// link through particles beside the column, where a disordered surface leaves gaps wider
+// than 1.5 dx inside a column two particles wide. The reading depends on the surroundings'
+// particles only, so it can be evaluated on them alone, wherever the rest of the fluid is
+// held. NaN when no bulk particle is in the column.
+inline constexpr int gauge_bulk_reach = 6;
 template <int D>
 Real gauge_water_level(const Particles<D>& ps, Real dx, Real x, std::optional<Real> y);
 
