@@ -112,8 +112,7 @@ CaseInfo describe_case(const CaseConfig& cfg) {
         vmax = std::max(vmax, block_max_speed(b, cfg.dimension));
     const TimeStepParams prm{info.h, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl,
                              cfg.force_cfl};
-    // The projection scheme has no acoustic limit (docs/PROJECTION.md).
-    const double c = cfg.scheme == Scheme::projection ? 0.0 : cfg.sound_speed;
+    const double c = cfl_sound_speed(cfg.scheme == Scheme::projection, cfg.sound_speed);
     const TimeStepLimits l = particle_time_step(prm, c, vmax, std::sqrt(g));
     info.dt_acoustic = l.acoustic;
     info.dt_viscous = l.viscous;

@@ -14,6 +14,7 @@
 #include "sluice/solver/simulation.hpp"
 
 #include "probe_sampling.hpp"
+#include "run_report.hpp"
 #include "stop_signals.hpp"
 
 #include <tbb/global_control.h>
@@ -32,103 +33,6 @@
 namespace sluice {
 
 namespace {
-
-nlohmann::json census_json(const NeighbourCensus& n) {
-    return {{"fluid_particles", n.fluid},   {"wall_particles", n.wall},
-            {"fluid_fluid", n.fluid_fluid}, {"fluid_wall", n.fluid_wall},
-            {"wall_fluid", n.wall_fluid},   {"wall_wall", n.wall_wall}};
-}
-
-// Per-rank profile as a flat list of numbers (same layout on every rank).
-template <int D>
-std::vector<double> profile_numbers(const Simulation<D>& sim) {
-    const auto& pr = sim.profile();
-    std::vector<double> v(pr.stage_busy.begin(), pr.stage_busy.end());
-    v.push_back(pr.halo_pack_busy);
-    v.push_back(pr.busy());
-    v.push_back(pr.graph_wall);
-    v.push_back(pr.between_wall);
-    v.push_back(pr.comm);
-    v.push_back(pr.exposed);
-    v.push_back(static_cast<double>(tasks::Comm::bytes_sent()));
-    v.push_back(static_cast<double>(sim.owned()));
-    return v;
-}
-
-// The end-of-run table (rank 0) and its JSON form for summary.json.
-nlohmann::json parallel_report(const std::vector<std::string>& stages,
-                               const std::vector<std::vector<double>>& per_rank, bool print) {
-    const std::size_t S = stages.size();
-    nlohmann::json ranks = nlohmann::json::array();
-    std::vector<double> busy;
-    double comm = 0, exposed = 0, bytes = 0;
-    std::vector<double> stage_total(S, 0.0);
-    if (print) {
-        std::string head = "rank";
-        for (const auto& s : stages)
-            head += fmt::format(" {:>9}", s);
-        fmt::print(stderr, "{} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>10}\n", head, "halo", "busy",
-                   "comm", "hidden", "idle-msg", "overlap", "sent");
-    }
-    for (std::size_t r = 0; r < per_rank.size(); ++r) {
-        const auto& v = per_rank[r];
-        nlohmann::json j;
-        nlohmann::json st = nlohmann::json::object();
-        for (std::size_t s = 0; s < S; ++s) {
-            st[stages[s]] = v[s];
-            stage_total[s] += v[s];
-        }
-        const double halo = v[S], b = v[S + 1], gw = v[S + 2], bw = v[S + 3], c = v[S + 4],
-                     x = v[S + 5], sent = v[S + 6], owned = v[S + 7];
-        j["rank"] = r;
-        j["stage_busy_seconds"] = st;
-        j["halo_pack_seconds"] = halo;
-        j["busy_seconds"] = b;
-        j["graph_wall_seconds"] = gw;
-        j["between_steps_wall_seconds"] = bw;
-        j["communication_seconds"] = c;
-        j["idle_waiting_for_messages_seconds"] = x;
-        j["hidden_communication_seconds"] = c - x;
-        j["overlap_efficiency"] = c > 0 ? (c - x) / c : 1.0;
-        j["bytes_sent"] = sent;
-        j["particles_at_end"] = owned;
-        ranks.push_back(j);
-        busy.push_back(b);
-        comm += c;
-        exposed += x;
-        bytes += sent;
-        if (print) {
-            std::string line = fmt::format("{:>4}", r);
-            for (std::size_t s = 0; s < S; ++s)
-                line += fmt::format(" {:>8.2f}s", v[s]);
-            fmt::print(stderr,
-                       "{} {:>8.2f}s {:>8.2f}s {:>8.3f}s {:>8.3f}s {:>8.3f}s {:>7.1f}% {:>10}\n",
-                       line, halo, b, c, c - x, x, 100 * (c > 0 ? (c - x) / c : 1.0),
-                       fmt::format("{:.1f} MB", sent / 1e6));
-        }
-    }
-    nlohmann::json total;
-    nlohmann::json st = nlohmann::json::object();
-    for (std::size_t s = 0; s < S; ++s)
-        st[stages[s]] = stage_total[s];
-    total["stage_busy_seconds"] = st;
-    total["communication_seconds"] = comm;
-    total["idle_waiting_for_messages_seconds"] = exposed;
-    total["hidden_communication_seconds"] = comm - exposed;
-    total["overlap_efficiency"] = comm > 0 ? (comm - exposed) / comm : 1.0;
-    total["load_imbalance"] = tasks::imbalance(busy);
-    total["bytes_sent"] = bytes;
-    if (print)
-        fmt::print(stderr,
-                   "total: overlap efficiency {:.1f}%, load imbalance (max/mean busy) {:.3f}, "
-                   "{:.1f} MB sent\n",
-                   100 * (comm > 0 ? (comm - exposed) / comm : 1.0), tasks::imbalance(busy),
-                   bytes / 1e6);
-    nlohmann::json out;
-    out["ranks"] = ranks;
-    out["total"] = total;
-    return out;
-}
 
 // The results folder a restart continues must still hold what the checkpoint says was written
 // (every rank checks, so all refuse together).

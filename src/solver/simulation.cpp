@@ -2,6 +2,7 @@
 
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/density.hpp"
+#include "sluice/physics/drift.hpp"
 #include "sluice/physics/initial_conditions.hpp"
 #include "sluice/physics/integrator.hpp"
 #include "sluice/physics/riemann.hpp"
@@ -222,8 +223,7 @@ TimeStepLimits Simulation<D>::limits_at_rest() const {
     Real vmax = 0;
     for (std::size_t i = 0; i < P_.size(); ++i)
         vmax = std::max(vmax, P_.v[i].norm());
-    // The projection scheme has no acoustic limit: only the flow speed enters its CFL.
-    const double c = cfg_.scheme == Scheme::projection ? 0.0 : cfg_.sound_speed;
+    const double c = cfl_sound_speed(cfg_.scheme == Scheme::projection, cfg_.sound_speed);
     return particle_time_step(ts_params_, c, vmax, std::sqrt(g));
 }
 
@@ -364,142 +364,6 @@ void Simulation<D>::build_graph() {
 }
 
 template <int D>
-void Simulation<D>::run_stage(int stage, int group) {
-    std::visit([&](const auto& k) { run_stage_with(k, stage, group); }, kernel_);
-}
-
-template <int D>
-template <class K>
-void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
-    Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x), kernel.support()};
-    NeighbourList<D>& list = lists_[static_cast<std::size_t>(group)];
-    // The first stage finds the group's neighbours once; every later stage of the step reuses
-    // them (positions do not change within a step).
-    if (stage == 0) {
-        // The kernel by value: see Neighbourhood::kernel_factors.
-        const auto factor = [kernel](Real r2) { return grad_factor(kernel, r2); };
-        // Wall centres list only fluid partners: nothing reads wall-wall pairs.
-        const auto partial = [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; };
-        const auto wanted = [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; };
-        const auto& group_cells = topo_.cells[static_cast<std::size_t>(group)];
-        if (skin_ <= 0) {
-            nb.build_list(group_cells, list, factor, partial, wanted);
-        } else {
-            NeighbourList<D>& wide = wide_[static_cast<std::size_t>(group)];
-            if (rebuilt_) {
-                // Built from the positions of the rebuild (equal to x, except in the first
-                // step after a restart).
-                Neighbourhood<D> within_skin = nb;
-                within_skin.x = std::span<const Vec<D>>(P_.x_ref);
-                within_skin.support = nb.support + skin_;
-                within_skin.build_list(
-                    group_cells, wide, [](Real r2) { return r2; }, partial, wanted);
-            }
-            nb.select_pairs(wide, list, factor);
-        }
-    }
-    nb.list = &list;
-    const auto& cells = topo_.cells[static_cast<std::size_t>(group)];
-    const StageKind kind = stage_kinds_[static_cast<std::size_t>(stage)];
-    switch (kind) {
-    case StageKind::density:
-        for (CellIndex c : cells) {
-            if (cfg_.density == DensityScheme::summation) {
-                summation_density(nb, kernel, c, P_, std::span<Real>(P_.rho));
-            } else if (density_gradient_) {
-                renormalised_density_gradient(nb, kernel, c, P_, std::span<Vec<D>>(P_.grad_rho));
-            }
-            equation_of_state(nb, eos_, c, P_, std::span<Real>(P_.p),
-                              std::span<Real>(P_.p_over_rho2), std::span<Real>(P_.volume));
-        }
-        break;
-    case StageKind::walls:
-        for (CellIndex c : cells)
-            dummy_wall_state(nb, kernel, eos_, momentum_.gravity, cfg_.no_slip,
-                             Real(std::pow(cfg_.dx, D)), c, P_);
-        break;
-    case StageKind::accel:
-        for (CellIndex c : cells) {
-            if (riemann_dissipation_)
-                riemann_acceleration(nb, kernel, riemann_, c, P_, std::span<Vec<D>>(P_.a));
-            else
-                acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a));
-            if (cfg_.shifting > 0) {
-                const ShiftingParams sp{Real(cfg_.shifting * u_max_ * h_ * dt_),
-                                        kernel.W(Real(cfg_.dx)), Real(0.1 * cfg_.dx)};
-                particle_shift(nb, kernel, sp, c, P_, std::span<Vec<D>>(P_.shift));
-            }
-        }
-        break;
-    case StageKind::kick:
-        // v_half is read by other groups only in their drift, which waits for this kick.
-        for (CellIndex c : cells)
-            for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
-                if (P_.kind[i] == Kind::fluid)
-                    P_.v_half[i] = kick<D>(P_.v_half[i], P_.a[i], Real(dt_prev_), Real(dt_));
-        break;
-    case StageKind::drift: {
-        if (steps_ + 1 == opts_.debug_fail_step && comm_.rank() == opts_.debug_fail_rank &&
-            group == 0)
-            throw std::runtime_error(fmt::format("deliberate failure of rank {} in step {} "
-                                                 "(--debug-fail-rank/--debug-fail-step)",
-                                                 comm_.rank(), steps_ + 1));
-        TimeStepLimits lim;
-        const Real dt = Real(dt_);
-        Real speed = 0, disp2 = 0;
-        std::string failure;
-        for (CellIndex c : cells) {
-            if (riemann_dissipation_)
-                riemann_continuity_rate(nb, kernel, riemann_, c, P_,
-                                        std::span<const Vec<D>>(P_.v_half),
-                                        std::span<Real>(P_.drho));
-            else if (continuity_)
-                continuity_rate(nb, kernel, diffusion_, c, P_, std::span<const Vec<D>>(P_.v_half),
-                                std::span<Real>(P_.drho));
-            for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
-                if (P_.kind[i] != Kind::fluid) {
-                    P_.x_next[i] = P_.x[i];
-                    P_.v_next[i] = P_.v[i];
-                    P_.rho_next[i] = P_.rho[i];
-                    continue;
-                }
-                Vec<D> x = drift<D>(P_.x[i], P_.v_half[i], dt);
-                if (cfg_.shifting > 0)
-                    x += P_.shift[i];
-                Vec<D> v = velocity_estimate<D>(P_.v_half[i], P_.a[i], dt);
-                const Real rho = continuity_ ? P_.rho[i] + dt * P_.drho[i] : P_.rho[i];
-                if (!planes_.empty())
-                    reflect(planes_, Real(cfg_.restitution), x, P_.v_half[i], v);
-                grid_.wrap(x);
-                P_.x_next[i] = x;
-                P_.v_next[i] = v;
-                P_.rho_next[i] = rho;
-                lim = min(lim, particle_time_step(ts_params_, eos_.sound_speed(rho), v.norm(),
-                                                  P_.a[i].norm()));
-                speed = std::max(speed, v.norm());
-                disp2 = std::max(disp2, (x - P_.x_ref[i]).squaredNorm());
-                if (failure.empty()) {
-                    const std::string what = state_fault(bounds_, x, v, rho);
-                    if (!what.empty())
-                        failure = fmt::format(
-                            "particle {} reached {} at step {}, t = {:.6g} s: x = [{}], v = [{}], "
-                            "rho = {:.6g}",
-                            P_.id[i], what, steps_ + 1, time_ + dt_,
-                            fmt::join(x.data(), x.data() + D, ", "),
-                            fmt::join(v.data(), v.data() + D, ", "), rho);
-                }
-            }
-        }
-        group_limits_[static_cast<std::size_t>(group)] = lim;
-        group_speed_[static_cast<std::size_t>(group)] = speed;
-        group_disp2_[static_cast<std::size_t>(group)] = disp2;
-        group_failure_[static_cast<std::size_t>(group)] = std::move(failure);
-        break;
-    }
-    }
-}
-
-template <int D>
 void Simulation<D>::step() {
     if (rebuilt_)
         ++list_rebuilds_;
@@ -555,89 +419,6 @@ void Simulation<D>::step() {
         rebuilt_ = rebalance_between_rebuilds();
     }
     profile_.between_wall += tasks::clock_seconds() - t_graph;
-}
-
-template <int D>
-void Simulation<D>::reduce_step_results(const std::string& task_error) {
-    TimeStepLimits lim;
-    for (const auto& l : group_limits_)
-        lim = min(lim, l);
-    Real speed = 0;
-    for (Real s : group_speed_)
-        speed = std::max(speed, s);
-    Real disp2 = 0;
-    for (Real d : group_disp2_)
-        disp2 = std::max(disp2, d);
-    // A task that threw comes first: the step's other results may be incomplete.
-    enum : std::int64_t { none = 0, physical = 1, internal = 2 };
-    std::int64_t failed = task_error.empty() ? none : internal;
-    std::string failure =
-        task_error.empty() ? std::string() : fmt::format("step {}: {}", steps_ + 1, task_error);
-    for (const std::string& f : group_failure_)
-        if (!f.empty() && failed == none) {
-            failed = physical;
-            failure = f;
-        }
-    double busy = 0;
-    for (const auto& r : graph_->task_records())
-        busy += r.end - r.start;
-    const unsigned requests = requests_local_;
-    requests_local_ = 0;
-    if (!comm_.parallel()) {
-        if (failed == internal)
-            throw InternalError(failure);
-        if (failed == physical)
-            throw RunError(failure);
-        limits_ = lim;
-        u_max_ = speed;
-        disp2_max_ = disp2;
-        last_busy_.assign(1, busy);
-        requests_agreed_ = requests;
-        return;
-    }
-    // One small all-gather per step: the time-step limits, the largest speed, failures,
-    // requests (stop, checkpoint) and the busy time the balancer needs. Every rank reduces the
-    // same list the same way.
-    struct Report {
-        double acoustic, viscous, force, speed, disp2, busy;
-        std::int64_t failed, requests;
-    };
-    const Report mine{lim.acoustic, lim.viscous, lim.force, speed,
-                      disp2,        busy,        failed,    static_cast<std::int64_t>(requests)};
-    const double t0 = tasks::clock_seconds();
-    const auto all = comm_.all_gather(
-        std::span<const std::byte>(reinterpret_cast<const std::byte*>(&mine), sizeof(mine)));
-    between_.push_back({"reduce", -1, true, sizeof(mine), t0, tasks::clock_seconds()});
-    TimeStepLimits global;
-    Real global_speed = 0, global_disp2 = 0;
-    int failed_rank = -1;
-    std::int64_t failed_kind = none;
-    std::int64_t agreed = 0;
-    last_busy_.assign(all.size(), 0.0);
-    for (std::size_t r = 0; r < all.size(); ++r) {
-        Report rep{};
-        std::memcpy(&rep, all[r].data(), sizeof(rep));
-        global = min(global, TimeStepLimits{rep.acoustic, rep.viscous, rep.force});
-        global_speed = std::max(global_speed, Real(rep.speed));
-        global_disp2 = std::max(global_disp2, Real(rep.disp2));
-        last_busy_[r] = rep.busy;
-        agreed |= rep.requests;
-        if (rep.failed != none && failed_rank < 0) {
-            failed_rank = static_cast<int>(r);
-            failed_kind = rep.failed;
-        }
-    }
-    if (failed_rank >= 0) {
-        const std::string msg =
-            fmt::format("{} (on rank {})", comm_.broadcast(failure, failed_rank), failed_rank);
-        if (failed_kind == internal)
-            throw InternalError(msg);
-        throw RunError(msg);
-    }
-    limits_ = global;
-    u_max_ = global_speed;
-    disp2_max_ = global_disp2;
-    requests_agreed_ = static_cast<unsigned>(agreed);
 }
 
 template <int D>

@@ -36,6 +36,13 @@ inline TimeStepLimits particle_time_step(const TimeStepParams& prm, double c, do
     return l;
 }
 
+// The sound speed a scheme's CFL limit uses: c0 for a weakly compressible scheme; none for an
+// incompressible one (the projection scheme, docs/PROJECTION.md), where no acoustic wave is
+// resolved and only the flow speed enters the CFL limit.
+inline double cfl_sound_speed(bool incompressible, double c0) {
+    return incompressible ? 0.0 : c0;
+}
+
 inline TimeStepLimits min(const TimeStepLimits& a, const TimeStepLimits& b) {
     return {std::min(a.acoustic, b.acoustic), std::min(a.viscous, b.viscous),
             std::min(a.force, b.force)};

@@ -1,0 +1,155 @@
+// The WCSPH scheme's stage bodies: what each node (stage, cell group) of the step graph
+// computes, calling the formulas of include/sluice/physics/ (density.hpp, walls.hpp,
+// momentum.hpp, riemann.hpp, shifting.hpp, integrator.hpp, drift.hpp). The stages themselves
+// and their halo exchanges are declared in simulation.cpp (build_graph).
+#include "sluice/solver/simulation.hpp"
+
+#include "sluice/physics/density.hpp"
+#include "sluice/physics/drift.hpp"
+#include "sluice/physics/integrator.hpp"
+#include "sluice/physics/riemann.hpp"
+#include "sluice/physics/shifting.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <stdexcept>
+
+namespace sluice {
+
+template <int D>
+void Simulation<D>::run_stage(int stage, int group) {
+    std::visit([&](const auto& k) { run_stage_with(k, stage, group); }, kernel_);
+}
+
+template <int D>
+template <class K>
+void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
+    Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x), kernel.support()};
+    NeighbourList<D>& list = lists_[static_cast<std::size_t>(group)];
+    // The first stage finds the group's neighbours once; every later stage of the step reuses
+    // them (positions do not change within a step).
+    if (stage == 0) {
+        // The kernel by value: see Neighbourhood::kernel_factors.
+        const auto factor = [kernel](Real r2) { return grad_factor(kernel, r2); };
+        // Wall centres list only fluid partners: nothing reads wall-wall pairs.
+        const auto partial = [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; };
+        const auto wanted = [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; };
+        const auto& group_cells = topo_.cells[static_cast<std::size_t>(group)];
+        if (skin_ <= 0) {
+            nb.build_list(group_cells, list, factor, partial, wanted);
+        } else {
+            NeighbourList<D>& wide = wide_[static_cast<std::size_t>(group)];
+            if (rebuilt_) {
+                // Built from the positions of the rebuild (equal to x, except in the first
+                // step after a restart).
+                Neighbourhood<D> within_skin = nb;
+                within_skin.x = std::span<const Vec<D>>(P_.x_ref);
+                within_skin.support = nb.support + skin_;
+                within_skin.build_list(
+                    group_cells, wide, [](Real r2) { return r2; }, partial, wanted);
+            }
+            nb.select_pairs(wide, list, factor);
+        }
+    }
+    nb.list = &list;
+    const auto& cells = topo_.cells[static_cast<std::size_t>(group)];
+    const StageKind kind = stage_kinds_[static_cast<std::size_t>(stage)];
+    switch (kind) {
+    case StageKind::density:
+        for (CellIndex c : cells) {
+            if (cfg_.density == DensityScheme::summation) {
+                summation_density(nb, kernel, c, P_, std::span<Real>(P_.rho));
+            } else if (density_gradient_) {
+                renormalised_density_gradient(nb, kernel, c, P_, std::span<Vec<D>>(P_.grad_rho));
+            }
+            equation_of_state(nb, eos_, c, P_, std::span<Real>(P_.p),
+                              std::span<Real>(P_.p_over_rho2), std::span<Real>(P_.volume));
+        }
+        break;
+    case StageKind::walls:
+        for (CellIndex c : cells)
+            dummy_wall_state(nb, kernel, eos_, momentum_.gravity, cfg_.no_slip,
+                             Real(std::pow(cfg_.dx, D)), c, P_);
+        break;
+    case StageKind::accel:
+        for (CellIndex c : cells) {
+            if (riemann_dissipation_)
+                riemann_acceleration(nb, kernel, riemann_, c, P_, std::span<Vec<D>>(P_.a));
+            else
+                acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a));
+            if (cfg_.shifting > 0) {
+                const ShiftingParams sp{Real(cfg_.shifting * u_max_ * h_ * dt_),
+                                        kernel.W(Real(cfg_.dx)), Real(0.1 * cfg_.dx)};
+                particle_shift(nb, kernel, sp, c, P_, std::span<Vec<D>>(P_.shift));
+            }
+        }
+        break;
+    case StageKind::kick:
+        // v_half is read by other groups only in their drift, which waits for this kick.
+        for (CellIndex c : cells)
+            for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                if (P_.kind[i] == Kind::fluid)
+                    P_.v_half[i] = kick<D>(P_.v_half[i], P_.a[i], Real(dt_prev_), Real(dt_));
+        break;
+    case StageKind::drift: {
+        if (steps_ + 1 == opts_.debug_fail_step && comm_.rank() == opts_.debug_fail_rank &&
+            group == 0)
+            throw std::runtime_error(fmt::format("deliberate failure of rank {} in step {} "
+                                                 "(--debug-fail-rank/--debug-fail-step)",
+                                                 comm_.rank(), steps_ + 1));
+        TimeStepLimits lim;
+        const Real dt = Real(dt_);
+        Real speed = 0, disp2 = 0;
+        std::string failure;
+        for (CellIndex c : cells) {
+            if (riemann_dissipation_)
+                riemann_continuity_rate(nb, kernel, riemann_, c, P_,
+                                        std::span<const Vec<D>>(P_.v_half),
+                                        std::span<Real>(P_.drho));
+            else if (continuity_)
+                continuity_rate(nb, kernel, diffusion_, c, P_, std::span<const Vec<D>>(P_.v_half),
+                                std::span<Real>(P_.drho));
+            for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+                if (P_.kind[i] != Kind::fluid) {
+                    P_.x_next[i] = P_.x[i];
+                    P_.v_next[i] = P_.v[i];
+                    P_.rho_next[i] = P_.rho[i];
+                    continue;
+                }
+                auto [x, v, rho] = leapfrog_drift<D>(P_.x[i], P_.v_half[i], P_.a[i], P_.rho[i],
+                                                     continuity_ ? &P_.drho[i] : nullptr,
+                                                     cfg_.shifting > 0 ? &P_.shift[i] : nullptr, dt,
+                                                     planes_, Real(cfg_.restitution));
+                grid_.wrap(x);
+                P_.x_next[i] = x;
+                P_.v_next[i] = v;
+                P_.rho_next[i] = rho;
+                lim = min(lim, particle_time_step(ts_params_, eos_.sound_speed(rho), v.norm(),
+                                                  P_.a[i].norm()));
+                speed = std::max(speed, v.norm());
+                disp2 = std::max(disp2, (x - P_.x_ref[i]).squaredNorm());
+                if (failure.empty()) {
+                    const std::string what = state_fault(bounds_, x, v, rho);
+                    if (!what.empty())
+                        failure = fmt::format(
+                            "particle {} reached {} at step {}, t = {:.6g} s: x = [{}], v = [{}], "
+                            "rho = {:.6g}",
+                            P_.id[i], what, steps_ + 1, time_ + dt_,
+                            fmt::join(x.data(), x.data() + D, ", "),
+                            fmt::join(v.data(), v.data() + D, ", "), rho);
+                }
+            }
+        }
+        group_limits_[static_cast<std::size_t>(group)] = lim;
+        group_speed_[static_cast<std::size_t>(group)] = speed;
+        group_disp2_[static_cast<std::size_t>(group)] = disp2;
+        group_failure_[static_cast<std::size_t>(group)] = std::move(failure);
+        break;
+    }
+    }
+}
+
+template void Simulation<2>::run_stage(int, int);
+template void Simulation<3>::run_stage(int, int);
+
+} // namespace sluice
