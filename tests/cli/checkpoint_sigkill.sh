@@ -3,7 +3,10 @@
 # checkpoint after every step is killed again and again (often in the middle of a write); after
 # each kill the run is continued from whatever checkpoint.h5 is there, which must open (a
 # refusal is exit code 2). The finished results must be byte-identical to an uninterrupted
-# run's. The random delays are printed with their seed (SLUICE_TEST_SEED reproduces them).
+# run's. Each kill waits until the run has replaced the checkpoint at least once, then lands
+# at a random moment of the following steps and writes, so every round makes progress however
+# slow or loaded the machine is. The random delays are printed with their seed
+# (SLUICE_TEST_SEED reproduces them).
 # Needs h5dump (hdf5-tools) to print the checkpoint's step.
 # Usage: checkpoint_sigkill.sh <sluice executable> <source dir>
 set -u
@@ -21,13 +24,20 @@ seed=${SLUICE_TEST_SEED:-$$}
 RANDOM=$seed
 echo "seed $seed"
 
-t0=$(date +%s%N)
 "$exe" run "$case_file" --out "$work/ref" "${sets[@]}" || fail "reference run: exit $?"
-# Kill delays scale with the machine: a random fraction of the uninterrupted run's wall time
-# (the checkpointing run is slower still), so kills land during the run on any machine.
-ref_ms=$((($(date +%s%N) - t0) / 1000000))
-span=$((ref_ms * 2 / 5 > 200 ? ref_ms * 2 / 5 : 200))
-echo "reference run ${ref_ms} ms; kill delays 100..$((100 + span)) ms"
+
+# The checkpoint file's identity: the write protocol renames a finished temporary file over it,
+# so a new checkpoint changes its inode or its change time.
+checkpoint_id() { stat -c '%i %z' "$out/checkpoint.h5" 2>/dev/null || echo none; }
+# Waits (at most 120 s) until the checkpoint differs from $1 or the run $2 has ended.
+wait_for_new_checkpoint() {
+    local before=$1 pid=$2 waited=0
+    while kill -0 "$pid" 2>/dev/null && [ "$(checkpoint_id)" == "$before" ]; do
+        sleep 0.005
+        waited=$((waited + 1))
+        [ $waited -lt 24000 ] || return 1
+    done
+}
 
 out="$work/kill"
 kills=0 restarts=0 finished=0 advanced=0 last_step=""
@@ -38,17 +48,19 @@ for round in $(seq 1 12); do
     else
         args=(--out "$out")
     fi
+    before=$(checkpoint_id)
     "$exe" run "$case_file" "${args[@]}" "${sets[@]}" --set checkpoint.every_steps=1 \
         2>"$work/err.txt" &
     pid=$!
-    ms=$((100 + RANDOM % span))
-    delay=$(printf '%d.%03d' $((ms / 1000)) $((ms % 1000)))
+    wait_for_new_checkpoint "$before" $pid || fail "round $round: no new checkpoint in 120 s"
+    ms=$((RANDOM % 40)) # a few steps' worth: often in the middle of the next write
+    delay=$(printf '0.%03d' $ms)
     sleep "$delay"
     kill -KILL $pid 2>/dev/null && kills=$((kills + 1))
     { wait $pid; } 2>/dev/null
     code=$?
     step=$(h5dump -a /step "$out/checkpoint.h5" 2>/dev/null | awk '/\(0\):/ {print $2}')
-    echo "round $round: ${args[0]}, killed after ${delay} s, exit $code, checkpoint at step ${step:-none}"
+    echo "round $round: ${args[0]}, killed ${delay} s after a new checkpoint, exit $code, checkpoint at step ${step:-none}"
     [ -n "$step" ] && [ "$step" != "$last_step" ] && advanced=$((advanced + 1)) && last_step=$step
     [ $code -eq 2 ] && fail "round $round: the checkpoint was refused: $(cat "$work/err.txt")"
     if [ $code -eq 0 ]; then
