@@ -2,8 +2,9 @@
 #include "sluice/solver/case_check.hpp"
 
 #include "sluice/io/errors.hpp"
-#include "sluice/physics/initial_conditions.hpp"
+#include "sluice/physics/initial_profiles.hpp"
 #include "sluice/physics/kernels.hpp"
+#include "sluice/solver/built_geometry.hpp"
 
 #include <fmt/format.h>
 

@@ -4,9 +4,10 @@
 #include "sluice/solver/run.hpp"
 
 #include "sluice/core/particles.hpp"
-#include "sluice/physics/initial_conditions.hpp"
 #include "sluice/physics/kernels.hpp"
 #include "sluice/physics/timestep.hpp"
+#include "sluice/solver/built_geometry.hpp"
+#include "sluice/solver/initial_state.hpp"
 
 #include <fmt/format.h>
 

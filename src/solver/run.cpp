@@ -10,7 +10,6 @@
 #include "sluice/io/run_log.hpp"
 #include "sluice/io/snapshot_writer.hpp"
 #include "sluice/io/summary.hpp"
-#include "sluice/physics/initial_conditions.hpp"
 #include "sluice/solver/simulation.hpp"
 
 #include "probe_sampling.hpp"

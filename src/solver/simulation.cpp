@@ -3,10 +3,10 @@
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/drift.hpp"
-#include "sluice/physics/initial_conditions.hpp"
 #include "sluice/physics/integrator.hpp"
 #include "sluice/physics/riemann.hpp"
 #include "sluice/physics/shifting.hpp"
+#include "sluice/solver/initial_state.hpp"
 
 #include "projection_data.hpp"
 

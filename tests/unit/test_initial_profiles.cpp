@@ -2,7 +2,8 @@
 // sine series, its Poisson equation and its zero edge), the elliptical-drop pressure, the
 // velocities and pressures the particles actually receive, and the particle count of an
 // ellipse-shaped block.
-#include "sluice/physics/initial_conditions.hpp"
+#include "sluice/physics/initial_profiles.hpp"
+#include "sluice/solver/initial_state.hpp"
 
 #include <doctest/doctest.h>
 

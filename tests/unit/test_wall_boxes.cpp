@@ -3,9 +3,10 @@
 // that overlap fluid, other boxes or the tank walls; and a surge cannot pass through a box.
 #include "sluice/io/case_reader.hpp"
 #include "sluice/io/errors.hpp"
-#include "sluice/physics/initial_conditions.hpp"
 #include "sluice/physics/kernels.hpp"
+#include "sluice/solver/built_geometry.hpp"
 #include "sluice/solver/case_check.hpp"
+#include "sluice/solver/initial_state.hpp"
 #include "sluice/solver/run.hpp"
 #include "sluice/solver/simulation.hpp"
 

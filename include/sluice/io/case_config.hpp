@@ -2,6 +2,8 @@
 // Everything a case file says, after validation. Dimension-agnostic: 3-component arrays whose
 // last component is ignored (and must be absent from the file) in 2-D.
 // Every field is documented for users in docs/CASE_REFERENCE.md; keep the two in step.
+#include "sluice/physics/options.hpp"
+
 #include <array>
 #include <optional>
 #include <string>
@@ -17,7 +19,9 @@ enum class InitialDecomposition { balanced, key_range };
 
 using Triple = std::array<double, 3>;
 
-enum class KernelType { quintic, wendland_c2, cubic_spline };
+// KernelType, EosType, DensityDiffusion, NeighbourPolicy and NeighbourSelection, the options
+// that physics formulas take, are in physics/options.hpp.
+
 // How a step advances the flow: weakly compressible SPH (explicit, EOS pressure) or the
 // incompressible projection scheme of seed 004 (implicit pressure Poisson equation with WMLS
 // operators; docs/PROJECTION.md).
@@ -26,11 +30,8 @@ enum class PressureSolver { bicgstab, sor };
 // Gradient of the projection scheme's velocity correction (docs/PROJECTION.md, P7).
 enum class CorrectionGradient { second_order, first_order };
 enum class DensityScheme { summation, continuity };
-// Form of the delta-SPH density diffusion term (docs/CASE_REFERENCE.md, [numerics]).
-enum class DensityDiffusion { antuono, fourtakas };
 // How WCSPH dissipates: artificial viscosity + delta-SPH, or a Riemann solver per pair.
 enum class Dissipation { artificial, riemann };
-enum class EosType { linear, tait };
 enum class WallModel { none, reflective, dummy };
 // Initial velocity (and matching pressure) over a block: uniform, the Taylor-Green vortex,
 // rigid rotation about the block centre (rotating square patch, Colagrossi 2005), or the
@@ -91,19 +92,8 @@ struct ProbeConfig {
     double min_thickness = 0;           // surge front [m]; 0 = 2 dx
 };
 
-// Which neighbours an operator uses (issue 5; Randles & Libersky 2000 as in seed 003).
-enum class NeighbourPolicy {
-    radius,     // every particle within the operator's support
-    convex_hull // the hull vertices of the inverse-square images of the candidates
-};
-struct NeighbourSelection {
-    NeighbourPolicy policy = NeighbourPolicy::radius;
-    double candidate_radius_over_dx = 3.1; // convex-hull: candidates within this many dx
-    bool union_with_radius = false;        // convex-hull: also every particle within the support
-    bool hull_boundary = true; // convex-hull: keep points on hull edges/faces, not only corners
-};
-// Per operator; read by operators that take a neighbour set (WMLS gradient and Laplacian,
-// free-surface detection). The WCSPH kernel sums always use the radius set.
+// A NeighbourSelection per operator; read by operators that take a neighbour set (WMLS gradient and
+// Laplacian, free-surface detection). The WCSPH kernel sums always use the radius set.
 struct OperatorNeighbours {
     NeighbourSelection gradient, laplacian, free_surface;
 };

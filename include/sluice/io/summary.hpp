@@ -2,7 +2,7 @@
 // summary.json: the record of a finished run. Written only at a successful end, atomically
 // (temporary file + rename), so its presence means the results folder is complete.
 #include "sluice/io/case_config.hpp"
-#include "sluice/solver/run.hpp"
+#include "sluice/io/run_result.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,7 @@
 // Normalisations are checked numerically in tests/unit/test_kernels.cpp (integral = 1,
 // gradient against finite differences).
 #include "sluice/core/types.hpp"
-#include "sluice/io/case_config.hpp"
+#include "sluice/physics/options.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
 #pragma once
 // Which neighbours an operator uses: the policy a case file chooses per operator
-// ([neighbours.<operator>], io/case_config.hpp). A pure function of the candidates' offsets.
+// ([neighbours.<operator>] of the case file; physics/options.hpp). A pure function of the
+// candidates' offsets.
 //
 //  * radius: every candidate with 0 <= |r| < support (the usual SPH neighbour set).
 //  * convex-hull (Randles & Libersky 2000; Lee & Lee 2011, seed 003): the candidates with
@@ -12,7 +13,7 @@
 //    needs more equations than the hull gives, e.g. a second-order least-squares fit).
 // A candidate at r = 0 (a coincident particle) has no image and is never a hull neighbour.
 #include "sluice/core/types.hpp"
-#include "sluice/io/case_config.hpp"
+#include "sluice/physics/options.hpp"
 
 #include <span>
 #include <vector>

@@ -1,6 +1,7 @@
 #pragma once
 // Entry points the command line calls: describe a case, run it.
 #include "sluice/io/case_config.hpp"
+#include "sluice/io/run_result.hpp"
 
 #include <cstdint>
 #include <string>
@@ -19,20 +20,6 @@ struct RunOptions {
     // --debug-fail-rank/--debug-fail-step: a task of that rank throws in that step (-1: never).
     int debug_fail_rank = -1;
     long debug_fail_step = -1;
-};
-
-struct RunResult {
-    std::int64_t steps = 0;
-    double simulated_time = 0;
-    double wall_seconds = 0;
-    std::size_t particles = 0; // fluid + wall
-    std::size_t fluid_particles = 0;
-    double particle_steps_per_second = 0;
-    double mass_initial = 0, mass_final = 0;
-    // Stopped early on request (signal or stop file) after writing `checkpoint`.
-    bool stopped = false;
-    std::string stop_reason; // rank 0: "SIGTERM", "SIGINT", "the stop file", ...
-    std::string checkpoint;
 };
 
 // What `sluice info` prints: derived without running a step.

@@ -1,4 +1,6 @@
-#include "sluice/physics/initial_conditions.hpp"
+#include "sluice/solver/initial_state.hpp"
+
+#include "initial_lattice.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,6 +12,14 @@
 #include <vector>
 
 namespace sluice {
+
+using detail::AxisSites;
+using detail::block_particles;
+using detail::box_axis_sites;
+using detail::box_particles;
+using detail::face_walled;
+using detail::lattice_count;
+using detail::tank_axis_sites;
 
 namespace {
 
@@ -23,11 +33,6 @@ double lattice_offset(std::uint64_t id, int axis) {
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     z ^= z >> 31;
     return static_cast<double>(z >> 11) * 0x1.0p-53 - 0.5;
-}
-
-// Lattice points of spacing dx centred in [lo, hi): lo + (k + 1/2) dx.
-int lattice_count(double lo, double hi, double dx) {
-    return std::max(0, static_cast<int>(std::round((hi - lo) / dx)));
 }
 
 // Calls f(k, x) for every lattice site k (integer coordinates) at x = lo + (k + 1/2) dx.
@@ -77,19 +82,6 @@ void for_each_site(const std::array<std::vector<double>, D>& sites, F&& f) {
 // n_a + n_b layers: `thin`), round((b - a)/dx) sites, at least one, centred in [a, b]. When dx
 // divides b - a (to 1e-9) the sites are a + (k + 1/2) dx, computed as the lattice of earlier
 // versions was, so such geometry stays bitwise identical.
-// (Outside the anonymous namespace: add_wall_particles<D>'s lambdas capture it, and GCC's
-// -Wsubobject-linkage objects to that in the sanitizer presets' unity builds.)
-} // namespace
-namespace detail {
-struct AxisSites {
-    std::vector<double> x;
-    int n_a = 0, mid = 0, n_b = 0; // sites in each part (thin: all in mid)
-    bool thin = false;
-};
-} // namespace detail
-using detail::AxisSites;
-namespace {
-
 AxisSites axis_sites(double a, double b, int n_a, int n_b, double dx) {
     const double q = (b - a) / dx;
     const int n = std::max(1, static_cast<int>(std::round(q)));
@@ -125,24 +117,6 @@ void for_each_lattice_point(const std::array<double, D>& lo, const std::array<in
                              [&](const std::array<int, D>&, const Vec<D>& x) { f(Vec<D>(x)); });
 }
 
-// Height above the bottom of a column at rest of the particle below which a mass sigma_below
-// per unit area lies, when the whole column holds sigma_total per unit area and its surface
-// is at the background pressure: z = int_0^sigma_below dsigma / rho(p(sigma)), with
-// p(sigma) = p_b + g (sigma_total - sigma) the weight above. Composite Simpson's rule; the
-// integrand varies by ~1 % over a weakly compressible column, so 32 panels are exact to
-// round-off for practical purposes.
-double settled_height(const Eos& eos, double g, double sigma_total, double sigma_below) {
-    constexpr int panels = 32;
-    const double step = sigma_below / panels;
-    const auto f = [&](double s) {
-        return 1.0 / eos.density(Real(eos.p_background + g * (sigma_total - s)));
-    };
-    double sum = f(0) + f(sigma_below);
-    for (int k = 1; k < panels; ++k)
-        sum += (k % 2 ? 4 : 2) * f(k * step);
-    return sum * step / 3;
-}
-
 // Velocity gradient term tr(G^2) of a block's profile about its centre (0 if none).
 double profile_trace_g2(const FluidBlock& b) {
     switch (b.profile) {
@@ -155,24 +129,20 @@ double profile_trace_g2(const FluidBlock& b) {
     }
 }
 
+} // namespace
+
+namespace detail {
+
+int lattice_count(double lo, double hi, double dx) {
+    return std::max(0, static_cast<int>(std::round((hi - lo) / dx)));
+}
+
 bool face_walled(const CaseConfig& cfg, int axis, bool upper) {
     static constexpr const char* names[3][2] = {{"x-", "x+"}, {"y-", "y+"}, {"z-", "z+"}};
     const std::string want = names[axis][upper ? 1 : 0];
     return std::find(cfg.tank_faces.begin(), cfg.tank_faces.end(), want) != cfg.tank_faces.end();
 }
 
-// Lattice sites of a wall box within `layers` sites of its surface: deeper sites are more than
-// one kernel support from any fluid particle, so they would never take part in a sum.
-template <int D>
-bool in_box_shell(const std::array<int, D>& k, const std::array<int, D>& n, int layers) {
-    for (int d = 0; d < D; ++d)
-        if (k[d] < layers || k[d] >= n[d] - layers)
-            return true;
-    return false;
-}
-
-// The tank's wall sites along axis d: the walled faces' layers laid outwards from tank_lo and
-// tank_hi, the span between them covered as axis_sites does.
 AxisSites tank_axis_sites(const CaseConfig& cfg, int d, int layers) {
     const bool lo_walled = face_walled(cfg, d, false), hi_walled = face_walled(cfg, d, true);
     const double a = cfg.tank_lo[d] - (lo_walled ? layers * cfg.dx : 0.0);
@@ -180,12 +150,10 @@ AxisSites tank_axis_sites(const CaseConfig& cfg, int d, int layers) {
     return axis_sites(a, b, lo_walled ? layers : 0, hi_walled ? layers : 0, cfg.dx);
 }
 
-// A box's sites along axis d: `layers` laid inwards from each face.
 AxisSites box_axis_sites(const WallBox& b, int d, int layers, double dx) {
     return axis_sites(b.lo[d], b.hi[d], layers, layers, dx);
 }
 
-// Particles of block b (the lattice of add_fluid_blocks, the shape's test).
 std::size_t block_particles(const CaseConfig& cfg, const FluidBlock& b) {
     std::array<double, 3> lo{};
     std::array<int, 3> n{1, 1, 1};
@@ -218,6 +186,20 @@ std::size_t block_particles(const CaseConfig& cfg, const FluidBlock& b) {
     else
         count_in(std::integral_constant<int, 3>{});
     return total;
+}
+
+} // namespace detail
+
+namespace {
+
+// Lattice sites of a wall box within `layers` sites of its surface: deeper sites are more than
+// one kernel support from any fluid particle, so they would never take part in a sum.
+template <int D>
+bool in_box_shell(const std::array<int, D>& k, const std::array<int, D>& n, int layers) {
+    for (int d = 0; d < D; ++d)
+        if (k[d] < layers || k[d] >= n[d] - layers)
+            return true;
+    return false;
 }
 
 } // namespace
@@ -262,29 +244,6 @@ double block_max_speed(const FluidBlock& b, int dimension) {
     else if (b.profile == VelocityProfile::strain)
         profile = std::abs(b.strain_rate) * r;
     return std::sqrt(v2) + profile;
-}
-
-double rotating_rectangle_pressure(double rho0, double omega, double Lx, double Ly, double x,
-                                   double y) {
-    // The particular solution x (x - Lx) vanishes on the x edges; the harmonic series cancels
-    // it on the y edges. cosh(k s)/cosh(k Ly/2) with |s| <= Ly/2 is evaluated as
-    // exp(k (|s| - Ly/2)) (1 + exp(-2 k |s|)) / (1 + exp(-k Ly)) so that large k cannot
-    // overflow. 400 odd terms: truncation below 1e-6 of the centre value.
-    const double pi = std::numbers::pi;
-    const double s = std::abs(y - 0.5 * Ly);
-    double series = 0;
-    for (int m = 1; m < 800; m += 2) {
-        const double k = m * pi / Lx;
-        const double ratio =
-            std::exp(k * (s - 0.5 * Ly)) * (1 + std::exp(-2 * k * s)) / (1 + std::exp(-k * Ly));
-        series += 8 * Lx * Lx / std::pow(m * pi, 3) * std::sin(k * x) * ratio;
-    }
-    return -rho0 * omega * omega * (x * (Lx - x) - series);
-}
-
-double ellipse_pressure(double rho0, double trace_g2, double a, double b, double xi, double eta) {
-    const double p0 = 0.5 * rho0 * trace_g2 * a * a * b * b / (a * a + b * b);
-    return p0 * (1 - xi * xi / (a * a) - eta * eta / (b * b));
 }
 
 template <int D>
@@ -423,11 +382,8 @@ std::size_t count_fluid_particles(const CaseConfig& cfg) {
     return total;
 }
 
-namespace {
-
-// Wall particles of box b: its sites less those deeper than `layers` from every face.
-std::size_t box_particles(const CaseConfig& cfg, const WallBox& b, int layers,
-                          std::array<int, 3>& n) {
+std::size_t detail::box_particles(const CaseConfig& cfg, const WallBox& b, int layers,
+                                  std::array<int, 3>& n) {
     std::size_t all = 1, deep = 1;
     for (int d = 0; d < cfg.dimension; ++d) {
         n[static_cast<std::size_t>(d)] =
@@ -437,8 +393,6 @@ std::size_t box_particles(const CaseConfig& cfg, const WallBox& b, int layers,
     }
     return all - deep;
 }
-
-} // namespace
 
 std::size_t count_wall_particles(const CaseConfig& cfg, int layers) {
     if (cfg.walls != WallModel::dummy)
@@ -454,64 +408,6 @@ std::size_t count_wall_particles(const CaseConfig& cfg, int layers) {
     for (const WallBox& b : cfg.boxes)
         boxes += box_particles(cfg, b, layers, n);
     return outer - inner + boxes;
-}
-
-BuiltGeometry built_geometry(const CaseConfig& cfg, int layers) {
-    BuiltGeometry g;
-    const double dx = cfg.dx;
-    const int dim = cfg.dimension;
-    if (cfg.walls == WallModel::dummy) {
-        std::array<AxisSites, 3> axes;
-        for (int d = 0; d < dim; ++d)
-            axes[static_cast<std::size_t>(d)] = tank_axis_sites(cfg, d, layers);
-        for (int d = 0; d < dim; ++d)
-            for (const bool upper : {false, true}) {
-                if (!face_walled(cfg, d, upper))
-                    continue;
-                const AxisSites& s = axes[static_cast<std::size_t>(d)];
-                BuiltFace f;
-                f.axis = d;
-                f.upper = upper;
-                f.layers = layers;
-                f.requested = upper ? cfg.tank_hi[d] : cfg.tank_lo[d];
-                f.built = upper ? s.x[static_cast<std::size_t>(s.n_a + s.mid)] - 0.5 * dx
-                                : s.x[static_cast<std::size_t>(s.n_a - 1)] + 0.5 * dx;
-                f.particles = static_cast<std::size_t>(layers);
-                for (int e = 0; e < dim; ++e)
-                    if (e != d)
-                        f.particles *= axes[static_cast<std::size_t>(e)].x.size();
-                g.faces.push_back(f);
-            }
-        for (const WallBox& b : cfg.boxes) {
-            BuiltBox bb;
-            for (int d = 0; d < dim; ++d) {
-                const AxisSites s = box_axis_sites(b, d, layers, dx);
-                bb.lo[d] = s.x.front() - 0.5 * dx;
-                bb.hi[d] = s.x.back() + 0.5 * dx;
-                bb.thin[static_cast<std::size_t>(d)] = s.thin;
-            }
-            bb.particles = box_particles(cfg, b, layers, bb.sites);
-            g.boxes.push_back(bb);
-        }
-    }
-    for (const FluidBlock& b : cfg.blocks) {
-        BuiltBlock bb;
-        double requested = 1;
-        for (int d = 0; d < dim; ++d) {
-            const auto a = static_cast<std::size_t>(d);
-            bb.sites[a] = block_lattice_count(cfg, b, d);
-            bb.capped[a] = bb.sites[a] < lattice_count(b.lo[d], b.hi[d], dx);
-            bb.hi[a] = b.lo[a] + bb.sites[a] * dx;
-            requested *= b.hi[a] - b.lo[a];
-        }
-        if (b.shape == BlockShape::ellipse)
-            requested *= dim == 2 ? std::numbers::pi / 4 : std::numbers::pi / 6;
-        bb.particles = block_particles(cfg, b);
-        bb.volume = static_cast<double>(bb.particles) * std::pow(dx, dim);
-        bb.requested_volume = requested;
-        g.blocks.push_back(bb);
-    }
-    return g;
 }
 
 template void add_fluid_blocks<2>(const CaseConfig&, const Eos&, Particles<2>&);

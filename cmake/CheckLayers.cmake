@@ -1,0 +1,104 @@
+# The layers, enforced (docs/ARCHITECTURE.md, "Layers"): what each layer's files may #include
+# of sluice's own headers. A file in a layer that includes a sluice header outside its allowed
+# list stops the configuration with the file and the include named.
+#
+#   core     include/sluice/core, src/core         sluice/core
+#   physics  include/sluice/physics, src/physics   sluice/core, sluice/physics
+#   io       include/sluice/io, src/io             sluice/core, sluice/physics, sluice/io,
+#                                                  sluice/version.hpp (generated)
+#   tasks    tasks/                                sluice/core, sluice/tasks
+#   solver, app: anything.
+#
+# Used two ways:
+#  - include()d by CMakeLists.txt: checks the source tree at configure time
+#    (sluice_check_layers), and the build re-runs it as a script when a checked file changes;
+#  - as a script: cmake -DSLUICE_LAYERS_ROOT=<tree> -P cmake/CheckLayers.cmake checks <tree>
+#    (the ctest `layers_check_refuses_bad_includes` runs it on tests/data/layers/).
+
+# The layers: name, folders (relative to the root), allowed include prefixes.
+set(SLUICE_LAYERS core physics io tasks)
+set(SLUICE_LAYER_core_DIRS include/sluice/core src/core)
+set(SLUICE_LAYER_core_ALLOWED sluice/core/)
+set(SLUICE_LAYER_physics_DIRS include/sluice/physics src/physics)
+set(SLUICE_LAYER_physics_ALLOWED sluice/core/ sluice/physics/)
+set(SLUICE_LAYER_io_DIRS include/sluice/io src/io)
+set(SLUICE_LAYER_io_ALLOWED sluice/core/ sluice/physics/ sluice/io/ sluice/version.hpp)
+set(SLUICE_LAYER_tasks_DIRS tasks)
+set(SLUICE_LAYER_tasks_ALLOWED sluice/core/ sluice/tasks/)
+
+set(SLUICE_LAYER_GLOBS *.hpp *.h *.cpp *.cc *.ipp *.inl)
+
+# Files of every layer under `root`, into `out` (absolute paths). Project mode only: the globs
+# are CONFIGURE_DEPENDS, so a file added to a layer is seen by the next build.
+function(sluice_layer_files root out)
+  set(files)
+  foreach(layer IN LISTS SLUICE_LAYERS)
+    foreach(dir IN LISTS SLUICE_LAYER_${layer}_DIRS)
+      set(globs)
+      foreach(g IN LISTS SLUICE_LAYER_GLOBS)
+        list(APPEND globs ${root}/${dir}/${g})
+      endforeach()
+      file(GLOB_RECURSE found CONFIGURE_DEPENDS ${globs})
+      list(APPEND files ${found})
+    endforeach()
+  endforeach()
+  list(SORT files)
+  set(${out} ${files} PARENT_SCOPE)
+endfunction()
+
+# Checks every layer's files under `root`; FATAL_ERROR listing each offending include.
+function(sluice_check_layers root)
+  set(errors)
+  set(checked 0)
+  foreach(layer IN LISTS SLUICE_LAYERS)
+    foreach(dir IN LISTS SLUICE_LAYER_${layer}_DIRS)
+      set(globs)
+      foreach(g IN LISTS SLUICE_LAYER_GLOBS)
+        list(APPEND globs ${root}/${dir}/${g})
+      endforeach()
+      file(GLOB_RECURSE files ${globs})
+      list(SORT files)
+      foreach(f IN LISTS files)
+        math(EXPR checked "${checked} + 1")
+        file(STRINGS ${f} lines ENCODING UTF-8
+             REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]sluice/[^\">]*[\">]")
+        foreach(line IN LISTS lines)
+          string(REGEX MATCH "[<\"](sluice/[^\">]*)[\">]" _ "${line}")
+          set(header ${CMAKE_MATCH_1})
+          set(ok FALSE)
+          foreach(prefix IN LISTS SLUICE_LAYER_${layer}_ALLOWED)
+            string(FIND "${header}" "${prefix}" at)
+            if(at EQUAL 0)
+              set(ok TRUE)
+            endif()
+          endforeach()
+          if(NOT ok)
+            file(RELATIVE_PATH rel ${root} ${f})
+            string(REPLACE ";" ", " allowed "${SLUICE_LAYER_${layer}_ALLOWED}")
+            list(APPEND errors
+                 "  ${rel} includes ${header}: the ${layer} layer may include only ${allowed}")
+          endif()
+        endforeach()
+      endforeach()
+    endforeach()
+  endforeach()
+  if(errors)
+    list(LENGTH errors n)
+    string(REPLACE ";" "\n" errors "${errors}")
+    message(FATAL_ERROR "Layer check (cmake/CheckLayers.cmake): ${n} include(s) against the "
+                        "layers (docs/ARCHITECTURE.md, \"Layers\"):\n${errors}\n")
+  endif()
+  if(checked EQUAL 0)
+    message(FATAL_ERROR "Layer check: no layer files under ${root}")
+  endif()
+endfunction()
+
+if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
+  if(NOT SLUICE_LAYERS_ROOT)
+    message(FATAL_ERROR "usage: cmake -DSLUICE_LAYERS_ROOT=<source tree> -P ${CMAKE_CURRENT_LIST_FILE}")
+  endif()
+  sluice_check_layers(${SLUICE_LAYERS_ROOT})
+  if(SLUICE_LAYERS_STAMP)
+    file(TOUCH ${SLUICE_LAYERS_STAMP})
+  endif()
+endif()

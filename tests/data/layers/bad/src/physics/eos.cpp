@@ -1,0 +1,3 @@
+// Fixture for the layer check: physics includes io (angle brackets).
+#include "sluice/physics/eos.hpp"
+#include <sluice/io/case_config.hpp>

@@ -1,0 +1,3 @@
+#pragma once
+// Fixture for the layer check: core includes only core.
+#include "sluice/core/types.hpp"
