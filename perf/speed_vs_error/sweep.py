@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import json
 import math
 import subprocess
 import sys
@@ -81,6 +82,27 @@ def resolution_overrides(name: str, case: dict, dx: float) -> dict:
         x_wall = case["walls"]["tank_hi"][0]
         o["probes.0.position"] = [x_wall - dx / 2, case["probes"][0]["position"][1]]
     return o
+
+
+def projection_case(sluice: Path, case_file: Path, out_dir: Path) -> Path:
+    """The case without the keys the projection scheme refuses (those `sluice schema` marks as
+    WCSPH's, e.g. numerics.delta_sph), for the projection variant; the case itself when the
+    binary has no `schema` command."""
+    r = subprocess.run([str(sluice), "schema"], capture_output=True, text=True)
+    if r.returncode != 0:
+        return case_file
+    drop = {(k["table"], k["key"]) for k in json.loads(r.stdout) if k["applies"] == "wcsph"}
+    table, kept = "", []
+    for line in case_file.read_text().splitlines(keepends=True):
+        s = line.strip()
+        if s.startswith("["):
+            table = s.split("#")[0].strip().strip("[]").strip()
+        elif "=" in s and not s.startswith("#") and (table, s.split("=")[0].strip()) in drop:
+            continue
+        kept.append(line)
+    out = out_dir / f"{case_file.stem}_projection.toml"
+    out.write_text("".join(kept))
+    return out
 
 
 def projection_available(sluice: Path, case_file: Path) -> bool:
@@ -227,7 +249,8 @@ def main() -> int:
         case_file = sr.ROOT / spec["file"]
         base = sr.read_case(case_file)
         evaluator, measure = evaluate.EVALUATORS[name]
-        proj = projection_available(sluice, case_file)
+        proj_file = projection_case(sluice, case_file, args.out)
+        proj = projection_available(sluice, proj_file)
         print(f"\n-- {name} ({spec['file']}): {measure}"
               + ("" if proj else "; projection scheme not offered by this build, skipped"))
         rows = []
@@ -241,7 +264,8 @@ def main() -> int:
                 overrides.update(resolution_overrides(name, base, dx))
                 overrides.update(var)
                 tag = f"{name}_{label.replace(' ', '_').replace(',', '')}_dx{dx:g}"
-                run = sr.run_sluice(binary, case_file, args.runs / tag, args.threads, overrides,
+                run = sr.run_sluice(binary, proj_file if label == "projection" else case_file,
+                                    args.runs / tag, args.threads, overrides,
                                     nice=args.nice, echo=False)
                 row = {"case": name, "variant": label, "dx": dx, "threads": args.threads,
                        "error_measure": measure, "git": git, "mode": mode,

@@ -1,4 +1,4 @@
-// The `sluice` command line: run a case, describe a case, check a case.
+// The `sluice` command line: run a case, describe a case, check a case, print the case schema.
 // Exit codes: 0 success, 1 unexpected failure, 2 bad case file, bad command line or a
 // checkpoint that cannot continue the case, 3 the run failed physically (RunError),
 // 4 stopped on request (SIGTERM/SIGINT or a stop file) after writing a checkpoint.
@@ -313,12 +313,19 @@ int main(int argc, char** argv) {
     CLI::App* check = app.add_subcommand(
         "check", "Validate a case without running it (exit code 0: it would run, 2: refused)");
     add_case_options(check, case_path, sets);
+    CLI::App* schema = app.add_subcommand(
+        "schema", "Print every key a case file may hold (table, key, type, unit, default, range, "
+                  "the scheme it applies to, doc) as JSON");
 
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         // --help / --version exit 0; every usage error is a bad command line: 2.
         return app.exit(e) == 0 ? 0 : kExitCaseError;
+    }
+    if (schema->parsed()) {
+        fmt::print("{}", sluice::case_schema_json());
+        return 0;
     }
     const Command command = run->parsed()    ? Command::run
                             : info->parsed() ? Command::info

@@ -285,7 +285,7 @@ void read_probes(const Section& root, CaseConfig& c) {
                                   iv->as_string()->get()));
             p.every_step = true;
         } else {
-            p.interval = s.number("interval", 0);
+            p.interval = s.number("interval", p.interval);
         }
         s.require(p.interval >= 0, "interval",
                   fmt::format("must be >= 0 (0 = every output interval), got {}", p.interval));

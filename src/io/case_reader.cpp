@@ -9,6 +9,7 @@
 #include "case_fingerprint.hpp"
 #include "case_limits.hpp"
 #include "case_probes.hpp"
+#include "case_schema.hpp"
 #include "case_toml.hpp"
 #include "toml_section.hpp"
 
@@ -30,6 +31,7 @@
 namespace sluice {
 namespace {
 
+using case_file::Applies;
 using case_file::join_list;
 using case_file::kAxis;
 using case_file::kMaxCoordinate;
@@ -156,11 +158,11 @@ void read_fluid(const Section& s, CaseConfig& c) {
     if (auto g = s.triple("gravity"))
         c.gravity = *g;
     s.require_triple_at_most(c.gravity, 1e6, "gravity", "m/s^2");
-    c.eos = s.choice("eos", EosType::linear, kEos);
-    c.gamma = s.number("gamma", 7);
+    c.eos = s.choice("eos", c.eos, kEos);
+    c.gamma = s.number("gamma", c.gamma);
     s.require(c.gamma > 0 && c.gamma <= 20, "gamma",
               fmt::format("must be in (0, 20] (7 for water), got {}", c.gamma));
-    c.background_pressure = s.number("background_pressure", 0);
+    c.background_pressure = s.number("background_pressure", c.background_pressure);
     s.require(c.background_pressure >= 0, "background_pressure",
               fmt::format("must be >= 0, got {}", c.background_pressure));
     s.require_at_most(c.background_pressure, 1e12, "background_pressure", "Pa");
@@ -233,12 +235,12 @@ void read_blocks(const Section& root, CaseConfig& c) {
         }
         if (auto v = s.triple("velocity"))
             b.velocity = *v;
-        b.shape = s.choice("shape", BlockShape::box, kShapes);
+        b.shape = s.choice("shape", b.shape, kShapes);
         s.require_triple_at_most(b.velocity, kMaxSpeed, "velocity", "m/s");
-        b.profile = s.choice("profile", VelocityProfile::uniform, kProfiles);
-        b.amplitude = s.number("amplitude", 0);
+        b.profile = s.choice("profile", b.profile, kProfiles);
+        b.amplitude = s.number("amplitude", b.amplitude);
         s.require_at_most(b.amplitude, kMaxSpeed, "amplitude", "m/s");
-        b.hydrostatic = s.boolean("hydrostatic").value_or(true);
+        b.hydrostatic = s.boolean("hydrostatic").value_or(b.hydrostatic);
         read_block_profile(s, c, b);
 
         // Two blocks sharing volume would put two particles on one lattice site.
@@ -268,24 +270,55 @@ void check_block_thickness(const Section& root, const CaseConfig& c) {
         }
 }
 
+// Every key the schema marks as read by one scheme only is refused under the other, where it
+// would silently do nothing (numerics.delta_sph under "projection", [projection] under
+// "wcsph"). Keys first, then tables, so that a key in [projection] is named rather than the
+// table. Only plain tables hold such keys (the schema's arrays of tables have none).
+void check_scheme_keys(const Section& top, Scheme scheme) {
+    const Applies own = scheme == Scheme::projection ? Applies::projection : Applies::wcsph;
+    const auto& keys = case_file::case_keys();
+    for (const bool tables : {false, true})
+        for (const auto& k : keys) {
+            const bool is_table = k.type == "table" || k.type == "array of tables";
+            if (k.applies == Applies::any || k.applies == own || is_table != tables)
+                continue;
+            const toml::table* t = &top.table();
+            std::string_view rest = k.table;
+            while (t != nullptr && !rest.empty()) {
+                const auto dot = rest.find('.');
+                const auto* n = t->get(rest.substr(0, dot));
+                t = n != nullptr ? n->as_table() : nullptr;
+                rest = dot == std::string_view::npos ? std::string_view() : rest.substr(dot + 1);
+            }
+            const toml::node* n = t != nullptr ? t->get(k.key) : nullptr;
+            if (n == nullptr)
+                continue;
+            top.reader().fail(
+                case_file::join_key(k.table, k.key),
+                fmt::format("applies only to numerics.scheme = \"{}\" (the scheme is \"{}\")",
+                            case_file::applies_name(k.applies), case_file::scheme_name(scheme)),
+                n);
+        }
+}
+
 void read_numerics(const Section& s, CaseConfig& c) {
-    c.scheme = s.choice("scheme", Scheme::wcsph, kSchemes);
-    c.kernel = s.choice("kernel", KernelType::quintic, kKernels);
-    c.h_over_dx = s.number("h_over_dx", 1.0);
+    c.kernel = s.choice("kernel", c.kernel, kKernels);
+    c.h_over_dx = s.number("h_over_dx", c.h_over_dx);
     // Below 0.5 a particle has no neighbour; above 4 the support holds thousands of them.
     s.require(c.h_over_dx >= 0.5 && c.h_over_dx <= 4, "h_over_dx",
               fmt::format("must be in [0.5, 4] (typically 1 to 2), got {}", c.h_over_dx));
-    c.density = s.choice("density", DensityScheme::continuity, kDensity);
-    c.delta_sph = s.number("delta_sph", 0.1);
+    c.density = s.choice("density", c.density, kDensity);
+    c.delta_sph = s.number("delta_sph", c.delta_sph);
     s.require(c.delta_sph >= 0 && c.delta_sph <= 1, "delta_sph",
               fmt::format("must be in [0, 1] (typically 0.1), got {}", c.delta_sph));
-    c.density_diffusion = s.choice("density_diffusion", DensityDiffusion::antuono, kDiffusion);
-    c.artificial_viscosity = s.number("artificial_viscosity", 0);
+    c.density_diffusion = s.choice("density_diffusion", c.density_diffusion, kDiffusion);
+    c.artificial_viscosity = s.number("artificial_viscosity", c.artificial_viscosity);
     s.require(
         c.artificial_viscosity >= 0 && c.artificial_viscosity <= 10, "artificial_viscosity",
         fmt::format("must be in [0, 10] (typically 0.01 to 0.1), got {}", c.artificial_viscosity));
-    c.wall_artificial_viscosity = s.boolean("wall_artificial_viscosity").value_or(false);
-    c.dissipation = s.choice("dissipation", Dissipation::artificial, kDissipation);
+    c.wall_artificial_viscosity =
+        s.boolean("wall_artificial_viscosity").value_or(c.wall_artificial_viscosity);
+    c.dissipation = s.choice("dissipation", c.dissipation, kDissipation);
     if (c.dissipation == Dissipation::riemann) {
         // The Riemann solver is the scheme's dissipation in both equations: refuse the keys it
         // replaces instead of ignoring them.
@@ -305,7 +338,7 @@ void read_numerics(const Section& s, CaseConfig& c) {
                   "the scheme's viscosity)");
         c.delta_sph = 0;
     }
-    c.shifting = s.number("shifting", 0);
+    c.shifting = s.number("shifting", c.shifting);
     s.require(c.shifting >= 0 && c.shifting <= 20, "shifting",
               fmt::format("must be in [0, 20], got {}", c.shifting));
     const auto cfl = [&](std::string_view k, double def) {
@@ -313,9 +346,9 @@ void read_numerics(const Section& s, CaseConfig& c) {
         s.require(v > 0 && v <= 1, k, fmt::format("must be in (0, 1], got {}", v));
         return v;
     };
-    c.cfl = cfl("cfl", 0.25);
-    c.viscous_cfl = cfl("viscous_cfl", 0.125);
-    c.force_cfl = cfl("force_cfl", 0.25);
+    c.cfl = cfl("cfl", c.cfl);
+    c.viscous_cfl = cfl("viscous_cfl", c.viscous_cfl);
+    c.force_cfl = cfl("force_cfl", c.force_cfl);
     if (auto dt = s.number("dt")) {
         s.require(*dt > 0, "dt", fmt::format("a fixed time step must be > 0, got {}", *dt));
         c.fixed_dt = *dt;
@@ -327,50 +360,43 @@ void read_numerics(const Section& s, CaseConfig& c) {
                           c.neighbour_skin));
 }
 
-// [projection]: refused with the WCSPH scheme, where it would silently do nothing.
+// [projection] (refused with the WCSPH scheme by check_scheme_keys).
 void read_projection(const Section& s, CaseConfig& c) {
-    if (c.scheme != Scheme::projection) {
-        for (const char* k : {"solver", "tolerance", "max_iterations", "relaxation", "gamma",
-                              "surface_diameter_over_dx", "surface_density_ratio",
-                              "correction_gradient", "fluid_collision"})
-            s.require(s.node(k) == nullptr, k,
-                      "applies only to numerics.scheme = \"projection\" (the scheme is "
-                      "\"wcsph\")");
+    if (c.scheme != Scheme::projection)
         return;
-    }
     ProjectionSettings& p = c.projection;
-    p.solver = s.choice("solver", PressureSolver::bicgstab, kPressureSolvers);
-    p.tolerance = s.number("tolerance", 1e-8);
+    p.solver = s.choice("solver", p.solver, kPressureSolvers);
+    p.tolerance = s.number("tolerance", p.tolerance);
     s.require(p.tolerance > 0 && p.tolerance < 1, "tolerance",
               fmt::format("must be in (0, 1) (a relative residual), got {}", p.tolerance));
-    const auto iterations = s.integer("max_iterations").value_or(1000);
+    const auto iterations = s.integer("max_iterations").value_or(p.max_iterations);
     s.require(iterations >= 1 && iterations <= 1000000, "max_iterations",
               fmt::format("must be between 1 and 1000000, got {}", iterations));
     p.max_iterations = static_cast<int>(iterations);
-    p.relaxation = s.number("relaxation", 1.5);
+    p.relaxation = s.number("relaxation", p.relaxation);
     s.require(p.relaxation > 0 && p.relaxation < 2, "relaxation",
               fmt::format("must be in (0, 2) for SOR to converge, got {}", p.relaxation));
     s.require(p.solver == PressureSolver::sor || s.node("relaxation") == nullptr, "relaxation",
               "applies only to solver = \"sor\"");
-    p.gamma = s.number("gamma", 0.01);
+    p.gamma = s.number("gamma", p.gamma);
     s.require(p.gamma >= 0 && p.gamma <= 1, "gamma",
               fmt::format("must be in [0, 1] (seed 004: gamma <= 1), got {}", p.gamma));
-    p.surface_diameter_over_dx = s.number("surface_diameter_over_dx", 2.1);
+    p.surface_diameter_over_dx = s.number("surface_diameter_over_dx", p.surface_diameter_over_dx);
     s.require(p.surface_diameter_over_dx >= 1 && p.surface_diameter_over_dx <= 4,
               "surface_diameter_over_dx",
               fmt::format("must be in [1, 4] lattice spacings (seed 004: 2.1), got {}",
                           p.surface_diameter_over_dx));
-    p.surface_density_ratio = s.number("surface_density_ratio", 0.0);
+    p.surface_density_ratio = s.number("surface_density_ratio", p.surface_density_ratio);
     s.require(p.surface_density_ratio >= 0 && p.surface_density_ratio < 1, "surface_density_ratio",
               fmt::format("must be in [0, 1) (0 = off; MPS uses 0.97 with re = 2.1 l0), got {}",
                           p.surface_density_ratio));
     p.correction_gradient =
-        s.choice("correction_gradient", CorrectionGradient::second_order, kCorrectionGradients);
-    p.fluid_collision = s.boolean("fluid_collision").value_or(true);
+        s.choice("correction_gradient", p.correction_gradient, kCorrectionGradients);
+    p.fluid_collision = s.boolean("fluid_collision").value_or(p.fluid_collision);
 }
 
 void read_walls(const Section& s, CaseConfig& c) {
-    c.walls = s.choice("model", WallModel::none, kWalls);
+    c.walls = s.choice("model", c.walls, kWalls);
     const double eps = slack(c);
     const auto dim = static_cast<std::size_t>(c.dimension);
     if (c.walls != WallModel::none) {
@@ -414,10 +440,10 @@ void read_walls(const Section& s, CaseConfig& c) {
         (void)s.triple("tank_hi");
         (void)s.strings("tank_faces");
     }
-    c.restitution = s.number("restitution", 1.0);
+    c.restitution = s.number("restitution", c.restitution);
     s.require(c.restitution >= 0 && c.restitution <= 1, "restitution",
               fmt::format("must be in [0, 1], got {}", c.restitution));
-    c.no_slip = s.boolean("no_slip").value_or(true);
+    c.no_slip = s.boolean("no_slip").value_or(c.no_slip);
 
     for (const auto& p : s.entries("planes")) {
         WallPlane w;
@@ -535,7 +561,7 @@ void check_blocks_in_tank(const Section& root, const CaseConfig& c) {
 void read_time(const Section& s, CaseConfig& c) {
     c.end_time = s.required_number("end_time", "simulated time to reach [s]");
     s.require(c.end_time > 0, "end_time", fmt::format("must be > 0, got {}", c.end_time));
-    c.output_interval = s.number("output_interval", 0);
+    c.output_interval = s.number("output_interval", c.output_interval);
     s.require(c.output_interval >= 0, "output_interval",
               fmt::format("must be >= 0 (0 = only the final state), got {}", c.output_interval));
     s.require(
@@ -545,7 +571,7 @@ void read_time(const Section& s, CaseConfig& c) {
 }
 
 void read_output(const Section& s, CaseConfig& c) {
-    c.snapshots = s.boolean("snapshots").value_or(true);
+    c.snapshots = s.boolean("snapshots").value_or(c.snapshots);
     if (auto f = s.strings("fields")) {
         std::set<std::string> seen;
         for (const auto& name : *f) {
@@ -561,45 +587,45 @@ void read_output(const Section& s, CaseConfig& c) {
 }
 
 void read_runtime(const Section& s, CaseConfig& c) {
-    const auto n = s.integer("particles_per_group").value_or(2000);
+    const auto n = s.integer("particles_per_group").value_or(c.particles_per_group);
     s.require(n >= 1 && n <= std::numeric_limits<int>::max(), "particles_per_group",
               fmt::format("must be between 1 and {}, got {}", std::numeric_limits<int>::max(), n));
     c.particles_per_group = static_cast<int>(n);
-    c.rebalance_threshold = s.number("rebalance_threshold", 0.10);
+    c.rebalance_threshold = s.number("rebalance_threshold", c.rebalance_threshold);
     s.require(
         c.rebalance_threshold > 0 && c.rebalance_threshold <= 10, "rebalance_threshold",
         fmt::format("must be in (0, 10] (a fraction of the mean), got {}", c.rebalance_threshold));
-    const auto window = s.integer("rebalance_window").value_or(10);
+    const auto window = s.integer("rebalance_window").value_or(c.rebalance_window);
     s.require(window >= 1 && window <= 1000000, "rebalance_window",
               fmt::format("must be between 1 and 1000000 steps, got {}", window));
     c.rebalance_window = static_cast<int>(window);
-    const auto every = s.integer("rebalance_every").value_or(0);
+    const auto every = s.integer("rebalance_every").value_or(c.rebalance_every);
     s.require(every >= 0 && every <= 1000000000, "rebalance_every",
               fmt::format("must be >= 0 steps (0 = only when unbalanced), got {}", every));
     c.rebalance_every = static_cast<int>(every);
-    c.balance_cost = s.choice("balance_cost", BalanceCost::time, kBalanceCost);
+    c.balance_cost = s.choice("balance_cost", c.balance_cost, kBalanceCost);
     c.initial_decomposition =
-        s.choice("initial_decomposition", InitialDecomposition::balanced, kInitialDecomposition);
+        s.choice("initial_decomposition", c.initial_decomposition, kInitialDecomposition);
 }
 
 // One operator's [neighbours.<operator>] table. The convex-hull keys are refused with the
 // radius policy, where they would silently do nothing.
 NeighbourSelection read_neighbour_selection(const Section& s) {
     NeighbourSelection n;
-    n.policy = s.choice("selection", NeighbourPolicy::radius, kNeighbourPolicies);
+    n.policy = s.choice("selection", n.policy, kNeighbourPolicies);
     if (n.policy == NeighbourPolicy::radius) {
         for (const char* k : {"candidate_radius_over_dx", "union_with_radius", "hull_points"})
             s.require(s.node(k) == nullptr, k,
                       "applies only to selection = \"convex-hull\" (selection is \"radius\")");
         return n;
     }
-    n.candidate_radius_over_dx = s.number("candidate_radius_over_dx", 3.1);
+    n.candidate_radius_over_dx = s.number("candidate_radius_over_dx", n.candidate_radius_over_dx);
     s.require(
         n.candidate_radius_over_dx > 0 && n.candidate_radius_over_dx <= 10,
         "candidate_radius_over_dx",
         fmt::format("must be in (0, 10] (lattice spacings), got {}", n.candidate_radius_over_dx));
-    n.union_with_radius = s.boolean("union_with_radius").value_or(false);
-    n.hull_boundary = s.choice("hull_points", true, kHullPoints);
+    n.union_with_radius = s.boolean("union_with_radius").value_or(n.union_with_radius);
+    n.hull_boundary = s.choice("hull_points", n.hull_boundary, kHullPoints);
     return n;
 }
 
@@ -610,11 +636,11 @@ void read_neighbours(const Section& s, CaseConfig& c) {
 }
 
 void read_checkpoint_table(const Section& s, CaseConfig& c) {
-    const auto steps = s.integer("every_steps").value_or(0);
+    const auto steps = s.integer("every_steps").value_or(c.checkpoint_every_steps);
     s.require(steps >= 0 && steps <= 1000000000, "every_steps",
               fmt::format("must be between 0 (off) and 1000000000 steps, got {}", steps));
     c.checkpoint_every_steps = static_cast<int>(steps);
-    c.checkpoint_every_minutes = s.number("every_minutes", 30);
+    c.checkpoint_every_minutes = s.number("every_minutes", c.checkpoint_every_minutes);
     s.require(
         c.checkpoint_every_minutes >= 0 && c.checkpoint_every_minutes <= 1e6, "every_minutes",
         fmt::format("must be between 0 (off) and 1e6 minutes, got {}", c.checkpoint_every_minutes));
@@ -718,12 +744,15 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
     c.dx = particles.required_number("dx", "lattice spacing [m]");
     particles.require(c.dx >= kMinDx, "dx",
                       fmt::format("must be at least {:g} m, got {}", kMinDx, c.dx));
-    c.jitter = particles.number("jitter", 0);
+    c.jitter = particles.number("jitter", c.jitter);
     particles.require(c.jitter >= 0 && c.jitter <= 0.1, "jitter",
                       fmt::format("must be in [0, 0.1] (a fraction of dx), got {}", c.jitter));
 
     read_blocks(top, c);
     check_block_thickness(top, c);
+    // The scheme first: it decides which keys of the file apply.
+    c.scheme = top.sub("numerics").choice("scheme", c.scheme, kSchemes);
+    check_scheme_keys(top, c.scheme);
     read_numerics(top.sub("numerics"), c);
     read_projection(top.sub("projection"), c);
     read_walls(top.sub("walls"), c);
@@ -761,6 +790,10 @@ CaseConfig read_case(const std::string& path, const std::vector<std::string>& ov
     CaseConfig c = build(root, r, path);
     c.fingerprint = case_fingerprint(root);
     return c;
+}
+
+std::string case_schema_json() {
+    return case_file::schema_json();
 }
 
 CaseConfig read_case_text(std::string_view text, const std::string& name,

@@ -1,50 +1,297 @@
 // The keys of every table of a case file (case_schema.hpp; docs/CASE_REFERENCE.md).
 #include "case_schema.hpp"
 
-namespace sluice::case_file {
+#include <nlohmann/json.hpp>
 
-const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = {
-    {"",
-     {"case", "domain", "fluid", "particles", "blocks", "numerics", "walls", "time", "output",
-      "probes", "runtime", "neighbours", "checkpoint", "limits", "projection"}},
-    {"case", {"name", "description", "dimension"}},
-    {"domain", {"lo", "hi", "periodic"}},
-    {"fluid",
-     {"rho0", "viscosity", "sound_speed", "gravity", "eos", "gamma", "background_pressure"}},
-    {"particles", {"dx", "jitter"}},
-    {"blocks",
-     {"lo", "hi", "shape", "velocity", "profile", "amplitude", "angular_velocity", "strain_rate",
-      "hydrostatic"}},
-    {"numerics",
-     {"scheme", "kernel", "h_over_dx", "density", "delta_sph", "density_diffusion",
-      "artificial_viscosity", "wall_artificial_viscosity", "dissipation", "shifting", "cfl",
-      "viscous_cfl", "force_cfl", "dt", "neighbour_skin"}},
-    {"walls",
-     {"model", "tank_lo", "tank_hi", "tank_faces", "restitution", "no_slip", "planes", "boxes"}},
-    {"walls.planes", {"point", "normal"}},
-    {"walls.boxes", {"lo", "hi"}},
-    {"time", {"end_time", "output_interval"}},
-    {"output", {"snapshots", "fields"}},
-    {"probes",
-     {"name", "type", "position", "x", "y", "interval", "diameter", "face", "box", "lo", "hi",
-      "moment_about", "direction", "min_thickness"}},
-    {"neighbours", {"gradient", "laplacian", "free_surface"}},
-    {"neighbours.gradient",
-     {"selection", "candidate_radius_over_dx", "union_with_radius", "hull_points"}},
-    {"neighbours.laplacian",
-     {"selection", "candidate_radius_over_dx", "union_with_radius", "hull_points"}},
-    {"neighbours.free_surface",
-     {"selection", "candidate_radius_over_dx", "union_with_radius", "hull_points"}},
-    {"runtime",
-     {"particles_per_group", "rebalance_threshold", "rebalance_window", "rebalance_every",
-      "balance_cost", "initial_decomposition"}},
-    {"checkpoint", {"every_steps", "every_minutes"}},
-    {"projection",
-     {"solver", "tolerance", "max_iterations", "relaxation", "gamma", "surface_diameter_over_dx",
-      "surface_density_ratio", "correction_gradient", "fluid_collision"}},
-    {"limits", {"max_speed", "min_density", "max_density"}},
+#include <stdexcept>
+
+namespace sluice::case_file {
+namespace {
+
+// Keys of a neighbour-selection table; one copy per operator (neighbours.<operator>).
+constexpr std::string_view kOperator = "neighbours.<operator>";
+constexpr std::string_view kOperators[] = {"neighbours.gradient", "neighbours.laplacian",
+                                           "neighbours.free_surface"};
+
+// clang-format off
+const KeySpec kKeys[] = {
+    // The tables of the file.
+    {"", "case", "table", "", "required", "", Applies::any, "", "Name, description and dimension."},
+    {"", "domain", "table", "", "required", "", Applies::any, "", "The box the fluid may occupy."},
+    {"", "fluid", "table", "", "required", "", Applies::any, "", "Fluid properties."},
+    {"", "particles", "table", "", "required", "", Applies::any, "", "Lattice spacing."},
+    {"", "blocks", "array of tables", "", "required", "", Applies::any, "", "Fluid blocks (at least one)."},
+    {"", "numerics", "table", "", "", "", Applies::any, "", "Scheme, kernel and time-step limits."},
+    {"", "walls", "table", "", "", "", Applies::any, "", "Tank walls, planes and obstacles."},
+    {"", "time", "table", "", "required", "", Applies::any, "", "End time and output interval."},
+    {"", "output", "table", "", "", "", Applies::any, "", "Snapshot contents."},
+    {"", "probes", "array of tables", "", "", "", Applies::any, "", "Time series."},
+    {"", "runtime", "table", "", "", "", Applies::any, "", "Performance settings (no effect on results)."},
+    {"", "neighbours", "table", "", "", "", Applies::any, "", "Neighbour selection per operator."},
+    {"", "checkpoint", "table", "", "", "", Applies::any, "", "When to save the state."},
+    {"", "limits", "table", "", "", "", Applies::any, "", "Blow-up detection."},
+    {"", "projection", "table", "", "", "", Applies::projection, "", "Pressure solve of the projection scheme."},
+    {"neighbours", "gradient", "table", "", "", "", Applies::any, "", "Neighbours of the WMLS gradient."},
+    {"neighbours", "laplacian", "table", "", "", "", Applies::any, "", "Neighbours of the WMLS Laplacian."},
+    {"neighbours", "free_surface", "table", "", "", "", Applies::any, "", "Neighbours of free-surface detection."},
+    // Their keys.
+    {"case", "name", "string", "", "file name without extension", "at most 200 bytes; no /, \\, control characters, . or ..", Applies::any, "",
+     "Case name; the default results folder is results/<name>."},
+    {"case", "description", "string", "", "\"\"", "", Applies::any, "",
+     "Free text, copied to summary.json."},
+    {"case", "dimension", "integer", "", "required", "2, 3", Applies::any, "",
+     "2 or 3."},
+    {"domain", "lo", "vector", "m", "required", "each component in [-1e6, 1e6]", Applies::any, "",
+     "Lower corner."},
+    {"domain", "hi", "vector", "m", "required", "each component in [-1e6, 1e6]; above lo", Applies::any, "",
+     "Upper corner; above lo on every axis."},
+    {"domain", "periodic", "array of dimension booleans", "", "all false", "", Applies::any, "",
+     "Axes that wrap around ([true, false]: periodic in x)."},
+    {"fluid", "rho0", "number", "kg/m³", "required", "(0, 1e6]", Applies::any, "",
+     "Reference density; > 0."},
+    {"fluid", "viscosity", "number", "Pa·s", "required", "[0, 1e6]", Applies::any, "",
+     "Dynamic viscosity μ; ≥ 0 (0 = inviscid)."},
+    {"fluid", "sound_speed", "number", "m/s", "required", "(0, 1e6]", Applies::any, "",
+     "Artificial speed of sound c₀; > 0."},
+    {"fluid", "gravity", "vector", "m/s²", "[0, -9.81] in 2-D, [0, 0, -9.81] in 3-D", "each component in [-1e6, 1e6]", Applies::any, "",
+     "Body acceleration (down the last axis by default)."},
+    {"fluid", "eos", "string", "", "\"linear\"", "\"linear\", \"tait\"", Applies::any, "",
+     "Equation of state: \"linear\" p = c₀²(ρ − ρ₀) + p_b, or \"tait\" p = ρ₀c₀²/γ ((ρ/ρ₀)^γ − 1) + p_b."},
+    {"fluid", "gamma", "number", "", "7", "(0, 20]", Applies::any, "",
+     "Tait exponent γ; in (0, 20]."},
+    {"fluid", "background_pressure", "number", "Pa", "0", "[0, 1e12]", Applies::any, "",
+     "p_b added by the equation of state; ≥ 0."},
+    {"particles", "dx", "number", "m", "required", "[1e-9, inf)", Applies::any, "",
+     "Lattice spacing of the initial particles; ≥ 10⁻⁹."},
+    {"particles", "jitter", "number", "dx", "0", "[0, 0.1]", Applies::any, "",
+     "Each fluid particle starts displaced from its lattice site by up to ±jitter·dx/2 along each axis: a fixed pseudo-random offset computed from its id, so every rank, thread count and run starts from the same positions."},
+    {"blocks", "lo", "vector", "m", "required", "", Applies::any, "",
+     "Lower corner."},
+    {"blocks", "hi", "vector", "m", "required", "above lo", Applies::any, "",
+     "Upper corner; above lo on every axis."},
+    {"blocks", "shape", "string", "", "\"box\"", "\"box\", \"ellipse\"", Applies::any, "",
+     "\"box\" (every lattice site of the box) or \"ellipse\": only the sites whose centres lie inside the ellipse inscribed in the box (an ellipsoid in 3-D; a circle or ball when the box is a square or cube)."},
+    {"blocks", "velocity", "vector", "m/s", "zeros", "each component in [-1e5, 1e5]", Applies::any, "",
+     "Initial velocity (uniform profile; added to any other profile)."},
+    {"blocks", "profile", "string", "", "\"uniform\"", "\"uniform\", \"taylor_green\", \"rotating\", \"strain\"", Applies::any, "",
+     "Initial velocity field and its pressure: \"uniform\", \"taylor_green\" (Taylor–Green vortex of speed amplitude over the block), \"rotating\" or \"strain\" (below)."},
+    {"blocks", "amplitude", "number", "m/s", "0", "[-1e5, 1e5]", Applies::any, "",
+     "Velocity scale of the taylor_green profile."},
+    {"blocks", "angular_velocity", "number", "rad/s", "required with rotating (not allowed otherwise)", "", Applies::any, "profile = \"rotating\"",
+     "ω of the rotating profile, counter-clockwise positive."},
+    {"blocks", "strain_rate", "number", "1/s", "required with strain (not allowed otherwise)", "", Applies::any, "profile = \"strain\"",
+     "A₀ of the strain profile."},
+    {"blocks", "hydrostatic", "boolean", "", "true", "", Applies::any, "",
+     "Start with the hydrostatic pressure ρ₀·|g|·(depth below the block's top) and the matching density from the EOS, instead of p = p_b."},
+    {"numerics", "scheme", "string", "", "\"wcsph\"", "\"wcsph\", \"projection\"", Applies::any, "",
+     "\"wcsph\" (weakly compressible SPH: EOS pressure, explicit) or \"projection\" (incompressible projection of seed 004: WMLS operators, implicit pressure Poisson equation; settings in [projection], algorithm in docs/PROJECTION.md)."},
+    {"numerics", "kernel", "string", "", "\"quintic\"", "\"quintic\", \"wendland_c2\", \"cubic_spline\"", Applies::any, "",
+     "Smoothing kernel: \"quintic\" (support 3h), \"wendland_c2\" (2h), \"cubic_spline\" (2h)."},
+    {"numerics", "h_over_dx", "number", "", "1.0", "[0.5, 4]", Applies::any, "",
+     "Smoothing length h = h_over_dx·dx; in [0.5, 4]."},
+    {"numerics", "density", "string", "", "\"continuity\"", "\"continuity\", \"summation\"", Applies::any, "",
+     "\"continuity\" (density integrated in time) or \"summation\" (density from a kernel sum)."},
+    {"numerics", "delta_sph", "number", "", "0.1", "[0, 1]", Applies::wcsph, "",
+     "δ-SPH density diffusion coefficient; in [0, 1], 0 = off."},
+    {"numerics", "density_diffusion", "string", "", "\"antuono\"", "\"antuono\", \"fourtakas\"", Applies::wcsph, "",
+     "Form of the δ-SPH term: \"antuono\" (Antuono et al."},
+    {"numerics", "artificial_viscosity", "number", "", "0", "[0, 10]", Applies::wcsph, "",
+     "Monaghan α; in [0, 10], 0 = off."},
+    {"numerics", "wall_artificial_viscosity", "boolean", "", "false", "", Applies::wcsph, "walls.model = \"dummy\"",
+     "Let the artificial viscosity act across fluid–wall pairs too (with the wall particles' boundary velocity: the no-slip mirror or, free-slip, the fluid's)."},
+    {"numerics", "dissipation", "string", "", "\"artificial\"", "\"artificial\", \"riemann\"", Applies::wcsph, "",
+     "WCSPH only."},
+    {"numerics", "shifting", "number", "", "0", "[0, 20]", Applies::wcsph, "",
+     "Particle-shifting coefficient A (0 = off); displacement per step −A·U·h·dt·Σ(1 + 0.2(W/W(dx))⁴)∇W V with U the largest fluid speed (Sun et al."},
+    {"numerics", "cfl", "number", "", "0.25", "(0, 1]", Applies::any, "",
+     "Acoustic limit dt ≤ cfl·h/(c₀ + |v|max); in (0, 1]."},
+    {"numerics", "viscous_cfl", "number", "", "0.125", "(0, 1]", Applies::any, "",
+     "Viscous limit dt ≤ viscous_cfl·h²/ν; in (0, 1]."},
+    {"numerics", "force_cfl", "number", "", "0.25", "(0, 1]", Applies::any, "",
+     "Force limit dt ≤ force_cfl·√(h/|a|max); in (0, 1]."},
+    {"numerics", "dt", "number", "s", "adaptive", "(0, inf); at most the stability limit", Applies::any, "",
+     "Fixed time step; > 0."},
+    {"numerics", "neighbour_skin", "number", "dx", "0.5", "[0, 2]", Applies::wcsph, "",
+     "Verlet skin: neighbour lists hold every pair within support + skin and are rebuilt, together with the particle sort, migration between ranks and regrouping, only when some particle has moved more than skin/2 since the last rebuild (or after a checkpoint)."},
+    {"projection", "solver", "string", "", "\"bicgstab\"", "\"bicgstab\", \"sor\"", Applies::projection, "",
+     "\"bicgstab\" (BiCGSTAB with Jacobi preconditioning; the WMLS Laplacian is not symmetric) or \"sor\" (the seed's successive over-relaxation; Gauss–Seidel inside a cell group, Jacobi across groups and ranks)."},
+    {"projection", "tolerance", "number", "", "1e-8", "(0, 1)", Applies::projection, "",
+     "Stop when ‖b̂ − Âp‖₂ ≤ tolerance·‖b̂‖₂ for the row-scaled system (units of pressure; docs/PROJECTION.md, P4); in (0, 1)."},
+    {"projection", "max_iterations", "integer", "", "1000", "[1, 1000000]", Applies::projection, "",
+     "BiCGSTAB iterations (two operator products each) or SOR sweeps per step; a solve that has not converged by then stops the run with exit code 3 and a message naming the solver, the residual and these keys."},
+    {"projection", "relaxation", "number", "", "1.5", "(0, 2)", Applies::projection, "projection.solver = \"sor\"",
+     "SOR relaxation factor (seed 004: 1.5); in (0, 2); only with solver = \"sor\"."},
+    {"projection", "gamma", "number", "", "0.01", "[0, 1]", Applies::projection, "",
+     "Relaxation γ of the density-deviation part of the source term (seed 004: γ ≤ 1); in [0, 1]."},
+    {"projection", "surface_diameter_over_dx", "number", "", "2.1", "[1, 4]", Applies::projection, "",
+     "Circle diameter of Dilts' arc free-surface test in lattice spacings (seed 004: 2.1); in [1, 4]."},
+    {"projection", "surface_density_ratio", "number", "", "0", "[0, 1)", Applies::projection, "",
+     "β of the number-density surface criterion (MPS, Koshizuka & Oka 1996): a particle with n_i < β n0 is also a free-surface particle (p = 0), besides the arc test; 0 = off; in [0, 1)."},
+    {"projection", "correction_gradient", "string", "", "\"second_order\"", "\"second_order\", \"first_order\"", Applies::projection, "",
+     "Gradient of the velocity correction P7: \"second_order\" (the WMLS fit of the PPE, seed 004) or \"first_order\" (the linear WMLS fit, exact for linear fields; docs/WMLS.md W18)."},
+    {"projection", "fluid_collision", "boolean", "", "true", "", Applies::projection, "",
+     "Koshizuka-type collision of fluid pairs closer than 0.8 dx that approach (restitution 0.2, momentum-conserving; docs/PROJECTION.md, \"Collisions\")."},
+    {"walls", "model", "string", "", "\"none\"", "\"none\", \"reflective\", \"dummy\"", Applies::any, "",
+     "\"none\", \"reflective\" (particles bounce off the tank faces) or \"dummy\" (layers of wall particles, Adami et al."},
+    {"walls", "tank_lo", "vector", "m", "required unless model = \"none\"", "inside the domain", Applies::any, "walls.model = \"reflective\" | \"dummy\"",
+     "Lower corner of the tank; inside the domain."},
+    {"walls", "tank_hi", "vector", "m", "required unless model = \"none\"", "above tank_lo, inside the domain", Applies::any, "walls.model = \"reflective\" | \"dummy\"",
+     "Upper corner of the tank; above tank_lo, inside the domain."},
+    {"walls", "tank_faces", "array of strings", "", "all faces: [\"x-\", \"x+\", \"y-\", \"y+\"] (2-D) plus \"z-\", \"z+\" (3-D)", "\"x-\", \"x+\", \"y-\", \"y+\", \"z-\", \"z+\"", Applies::any, "walls.model = \"reflective\" | \"dummy\"",
+     "Faces of the tank that carry a wall; - is the low side."},
+    {"walls", "restitution", "number", "", "1.0", "[0, 1]", Applies::any, "",
+     "Reflective walls and planes: fraction of the normal velocity kept after a bounce; in [0, 1]."},
+    {"walls", "no_slip", "boolean", "", "true", "", Applies::any, "walls.model = \"dummy\"",
+     "Dummy walls: no-slip (true) or free-slip (false)."},
+    {"walls", "planes", "array of tables", "", "", "", Applies::any, "", "Extra reflective planes."},
+    {"walls", "boxes", "array of tables", "", "", "", Applies::any, "walls.model = \"dummy\"", "Solid obstacles of dummy wall particles."},
+    {"walls.planes", "point", "vector", "m", "required", "each component in [-1e6, 1e6]", Applies::any, "",
+     "A point on the plane."},
+    {"walls.planes", "normal", "vector", "", "required", "not the zero vector", Applies::any, "",
+     "Direction pointing to the fluid side; not zero."},
+    {"walls.boxes", "lo", "vector", "m", "required", "", Applies::any, "",
+     "Lower corner."},
+    {"walls.boxes", "hi", "vector", "m", "required", "above lo", Applies::any, "",
+     "Upper corner; above lo on every axis."},
+    {"time", "end_time", "number", "s", "required", "(0, inf)", Applies::any, "",
+     "Simulated time to reach; > 0."},
+    {"time", "output_interval", "number", "s", "0", "[0, inf)", Applies::any, "",
+     "Interval between snapshots (and default probe interval); ≥ 0."},
+    {"output", "snapshots", "boolean", "", "true", "", Applies::any, "",
+     "Write particle snapshots."},
+    {"output", "fields", "array of strings", "", "[\"position\", \"velocity\", \"density\", \"pressure\", \"id\", \"kind\"]", "\"position\", \"velocity\", \"density\", \"pressure\", \"acceleration\", \"mass\", \"id\", \"kind\"", Applies::any, "",
+     "Fields in each snapshot, from position, velocity, density, pressure, acceleration, mass, id, kind; no duplicates."},
+    {"probes", "name", "string", "", "required", "letters, digits, _ and -; at most 200 bytes; unique", Applies::any, "",
+     "File name stem: letters, digits, _ and - only; unique; at most 200 bytes."},
+    {"probes", "type", "string", "", "required", "\"pressure\", \"water_level\", \"surge_front\", \"force\"", Applies::any, "",
+     "\"pressure\", \"water_level\", \"surge_front\" or \"force\"."},
+    {"probes", "position", "vector", "m", "required for pressure (not allowed otherwise)", "", Applies::any, "type = \"pressure\"",
+     "Sampling point, inside the domain; for an area sensor its centre, on a wall surface (within dx)."},
+    {"probes", "x", "number", "m", "required for water_level (not allowed otherwise)", "", Applies::any, "type = \"water_level\"",
+     "Horizontal position of the gauge, inside the tank (the domain without walls)."},
+    {"probes", "y", "number", "m", "whole width", "", Applies::any, "type = \"water_level\"",
+     "water_level in 3-D only: a point gauge at (x, y)."},
+    {"probes", "interval", "number or \"every_step\"", "s", "0", "[0, inf) or \"every_step\"", Applies::any, "",
+     "Sampling interval; ≥ 0."},
+    {"probes", "diameter", "number", "m", "point probe", "(0, 1e6]", Applies::any, "type = \"pressure\"",
+     "pressure only: an area sensor (flush-mounted transducer) of this diameter; > 0."},
+    {"probes", "face", "string", "", "–", "\"x-\", \"x+\", \"y-\", \"y+\", \"z-\", \"z+\"", Applies::any, "type = \"force\" | \"pressure\"",
+     "force: the tank face loaded (\"x-\", \"x+\", …; must be in walls.tank_faces)."},
+    {"probes", "box", "integer", "", "–", "a walls.boxes index", Applies::any, "type = \"force\" | \"pressure\"",
+     "force: the [[walls.boxes]] index loaded (0 = first)."},
+    {"probes", "lo", "vector", "m", "the whole face or box", "", Applies::any, "type = \"force\"",
+     "force only: limits the region to the wall particles inside [lo, hi] (a part of a face: a panel)."},
+    {"probes", "hi", "vector", "m", "the whole face or box", "", Applies::any, "type = \"force\"",
+     "force only: limits the region to the wall particles inside [lo, hi] (a part of a face: a panel)."},
+    {"probes", "moment_about", "vector", "m", "no moment", "", Applies::any, "type = \"force\"",
+     "force only: also write the moment about this point."},
+    {"probes", "direction", "string", "", "\"+x\"", "\"+x\", \"-x\", \"+y\", \"-y\", \"+z\", \"-z\"", Applies::any, "type = \"surge_front\"",
+     "surge_front only: \"+x\", \"-x\", \"+y\", \"-y\" (3-D also \"+z\", \"-z\")."},
+    {"probes", "min_thickness", "number", "m", "2·dx", "(0, 1e6]", Applies::any, "type = \"surge_front\"",
+     "surge_front only: the fluid depth a column needs to count as the front; > 0."},
+    {"neighbours.<operator>", "selection", "string", "", "\"radius\"", "\"radius\", \"convex-hull\"", Applies::any, "",
+     "\"radius\": every particle within the operator's support."},
+    {"neighbours.<operator>", "candidate_radius_over_dx", "number", "dx", "3.1", "(0, 10]", Applies::any, "selection = \"convex-hull\"",
+     "convex-hull only: candidates are the particles within this many lattice spacings; in (0, 10]."},
+    {"neighbours.<operator>", "union_with_radius", "boolean", "", "false", "", Applies::any, "selection = \"convex-hull\"",
+     "convex-hull only: add every particle within the support to the hull neighbours (for an operator that needs more neighbours than the hull gives, e.g."},
+    {"neighbours.<operator>", "hull_points", "string", "", "\"boundary\"", "\"vertices\", \"boundary\"", Applies::any, "selection = \"convex-hull\"",
+     "convex-hull only: \"vertices\" keeps the hull corners; \"boundary\" also the images lying on a hull edge (3-D: facet), within 10⁻⁹ of the hull's size — e.g."},
+    {"runtime", "particles_per_group", "integer", "particles", "2000", "[1, 2147483647]", Applies::any, "",
+     "Target size of the cell groups the task scheduler works on; ≥ 1."},
+    {"runtime", "rebalance_threshold", "number", "fraction", "0.10", "(0, 10]", Applies::any, "",
+     "On several ranks, move the cut points when the slowest rank's busy time exceeds the mean by more than this over a window; in (0, 10]."},
+    {"runtime", "rebalance_window", "integer", "steps", "10", "[1, 1000000]", Applies::any, "",
+     "Steps over which busy time is summed before the imbalance is judged; ≥ 1."},
+    {"runtime", "rebalance_every", "integer", "steps", "0", "[0, 1000000000]", Applies::any, "",
+     "Also rebalance every this many steps whatever the imbalance (0: only when unbalanced)."},
+    {"runtime", "balance_cost", "string", "", "\"time\"", "\"time\", \"particles\"", Applies::any, "",
+     "What the balancer equalises: \"time\" (measured task time per cell group) or \"particles\"."},
+    {"runtime", "initial_decomposition", "string", "", "\"balanced\"", "\"balanced\", \"key-range\"", Applies::any, "",
+     "How ranks split the curve at start: \"balanced\" (equal particle counts) or \"key-range\" (equal key ranges; naive and usually unbalanced, for testing the balancer)."},
+    {"checkpoint", "every_steps", "integer", "steps", "0", "[0, 1000000000]", Applies::any, "",
+     "Write <results>/checkpoint.h5 after every this many steps (counted from the start of the run); 0 = off."},
+    {"checkpoint", "every_minutes", "number", "minutes", "30", "[0, 1e6]", Applies::any, "",
+     "Also write one when this much wall time has passed since the last (rank 0's clock decides; all ranks write at the same step); 0 = off."},
+    {"limits", "max_speed", "number", "m/s", "fluid.sound_speed", "(0, inf)", Applies::any, "",
+     "Largest speed a fluid particle may reach; > 0."},
+    {"limits", "min_density", "number", "kg/m^3", "0.01  rho0", "[0, fluid.rho0)", Applies::any, "",
+     "Smallest density; ≥ 0 and below rho0."},
+    {"limits", "max_density", "number", "kg/m^3", "2  rho0", "(fluid.rho0, inf)", Applies::any, "",
+     "Largest density; above rho0."},
 };
-const std::set<std::string, std::less<>> kArrayTables = {"blocks", "probes", "walls.planes",
-                                                         "walls.boxes"};
+// clang-format on
+
+std::vector<KeySpec> expand() {
+    std::vector<KeySpec> out;
+    for (const auto& k : kKeys) {
+        if (k.table != kOperator) {
+            out.push_back(k);
+            continue;
+        }
+        for (const auto op : kOperators) {
+            KeySpec copy = k;
+            copy.table = op;
+            out.push_back(copy);
+        }
+    }
+    return out;
+}
+
+std::string joined(std::string_view table, std::string_view key) {
+    return table.empty() ? std::string(key) : std::string(table) + "." + std::string(key);
+}
+
+} // namespace
+
+const std::vector<KeySpec>& case_keys() {
+    static const std::vector<KeySpec> keys = expand();
+    return keys;
+}
+
+const std::map<std::string, std::vector<std::string>, std::less<>> kSchema = [] {
+    std::map<std::string, std::vector<std::string>, std::less<>> m;
+    for (const auto& k : case_keys())
+        m[std::string(k.table)].emplace_back(k.key);
+    return m;
+}();
+
+const std::set<std::string, std::less<>> kArrayTables = [] {
+    std::set<std::string, std::less<>> s;
+    for (const auto& k : case_keys())
+        if (k.type == "array of tables")
+            s.insert(joined(k.table, k.key));
+    return s;
+}();
+
+const char* applies_name(Applies a) {
+    switch (a) {
+    case Applies::wcsph:
+        return "wcsph";
+    case Applies::projection:
+        return "projection";
+    default:
+        return "any";
+    }
+}
+
+const char* scheme_name(Scheme s) {
+    return s == Scheme::projection ? "projection" : "wcsph";
+}
+
+std::string schema_json() {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const auto& k : case_keys())
+        out.push_back({{"table", k.table},
+                       {"key", k.key},
+                       {"type", k.type},
+                       {"unit", k.unit},
+                       {"default", k.default_text},
+                       {"range", k.range},
+                       {"applies", applies_name(k.applies)},
+                       {"when", k.when},
+                       {"doc", k.doc}});
+    return out.dump(1) + "\n";
+}
 
 } // namespace sluice::case_file

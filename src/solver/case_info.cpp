@@ -31,10 +31,9 @@ const char* kernel_name(KernelType k) {
     return "?";
 }
 
-// Bytes of particle state per particle (the arrays of Particles<D>).
+// Bytes of particle state per particle: one element of every array of Particles<D>.
 std::size_t bytes_per_particle(int dim) {
-    const std::size_t vec = static_cast<std::size_t>(dim) * sizeof(Real);
-    return 8 * vec + 5 * sizeof(Real) + sizeof(ParticleId) + sizeof(Kind);
+    return dim == 2 ? Particles<2>::bytes_per_particle() : Particles<3>::bytes_per_particle();
 }
 
 // "[a, b]" or "[a, b, c]" with 6 significant digits.

@@ -20,7 +20,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <map>
+#include <string>
 
 using namespace sluice;
 using namespace sluice::testing;
@@ -50,11 +53,17 @@ void step_without_free_surface(Simulation<2>& sim, const CaseConfig& cfg) {
 
 // Taylor-Green with the projection scheme; checks every solve and returns the final state.
 Particles<2> taylor_green(double background_pressure, double& energy_error) {
+    // The file's numerics.shifting is WCSPH's (refused under the projection scheme): dropped.
+    std::ifstream in(case_path("taylor_green_2d.toml"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find("\nshifting =");
+    REQUIRE(at != std::string::npos);
+    text.erase(at + 1, text.find('\n', at + 1) - at);
     const CaseConfig cfg =
-        read_case(case_path("taylor_green_2d.toml"),
-                  {"numerics.scheme=\"projection\"", "particles.dx=0.02", "time.end_time=0.1",
-                   "projection.fluid_collision=false",
-                   fmt::format("fluid.background_pressure={}", background_pressure)});
+        read_case_text(text, case_path("taylor_green_2d.toml"),
+                       {"numerics.scheme=\"projection\"", "particles.dx=0.02", "time.end_time=0.1",
+                        "projection.fluid_collision=false",
+                        fmt::format("fluid.background_pressure={}", background_pressure)});
     Simulation<2> sim(cfg);
     const double nu = cfg.viscosity / cfg.rho0;
     const double L = cfg.domain_hi[0] - cfg.domain_lo[0];

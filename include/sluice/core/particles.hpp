@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <span>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace sluice {
@@ -42,6 +44,45 @@ struct Particles {
     std::vector<Real> rho_next;
 
     [[nodiscard]] std::size_t size() const { return id.size(); }
+
+    // Calls f(&Particles::array) for every per-particle array above. The static_assert below
+    // the struct fails when an array is added without being listed here.
+    template <class F>
+    static constexpr void for_each_array(F&& f) {
+        f(&Particles::id);
+        f(&Particles::kind);
+        f(&Particles::x);
+        f(&Particles::v);
+        f(&Particles::rho);
+        f(&Particles::mass);
+        f(&Particles::x_ref);
+        f(&Particles::p);
+        f(&Particles::p_over_rho2);
+        f(&Particles::volume);
+        f(&Particles::a);
+        f(&Particles::drho);
+        f(&Particles::grad_rho);
+        f(&Particles::v_bc);
+        f(&Particles::shift);
+        f(&Particles::v_half);
+        f(&Particles::x_next);
+        f(&Particles::v_next);
+        f(&Particles::rho_next);
+    }
+    static constexpr std::size_t array_count() {
+        std::size_t n = 0;
+        for_each_array([&](auto) { ++n; });
+        return n;
+    }
+    // Bytes of state one particle occupies: one element of every array (`sluice info`).
+    static constexpr std::size_t bytes_per_particle() {
+        std::size_t bytes = 0;
+        for_each_array([&](auto member) {
+            using Array = std::remove_reference_t<decltype(std::declval<Particles&>().*member)>;
+            bytes += sizeof(typename Array::value_type);
+        });
+        return bytes;
+    }
 
     void resize(std::size_t n) {
         id.resize(n);
@@ -97,5 +138,9 @@ struct Particles {
 
 extern template struct Particles<2>;
 extern template struct Particles<3>;
+
+// Every member is a per-particle array, and for_each_array lists them all.
+static_assert(sizeof(Particles<2>) == Particles<2>::array_count() * sizeof(std::vector<Real>));
+static_assert(sizeof(Particles<3>) == Particles<3>::array_count() * sizeof(std::vector<Real>));
 
 } // namespace sluice

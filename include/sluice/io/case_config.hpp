@@ -51,17 +51,23 @@ struct FluidBlock {
     double angular_velocity = 0; // [rad/s] rotating profile, counter-clockwise positive (2-D)
     double strain_rate = 0;      // [1/s] strain profile: v = (-A0 x, A0 y) about the centre
     bool hydrostatic = true;     // initial density/pressure from rho0*|g|*(depth) with the EOS
+
+    bool operator==(const FluidBlock&) const = default;
 };
 
 // A planar reflective wall: particles are kept on the side the normal points to.
 struct WallPlane {
     Triple point{};
     Triple normal{};
+
+    bool operator==(const WallPlane&) const = default;
 };
 
 // A solid obstacle: an axis-aligned box of fixed dummy wall particles inside the tank.
 struct WallBox {
     Triple lo{}, hi{}; // [m] lattice sites of spacing dx centred in the box
+
+    bool operator==(const WallBox&) const = default;
 };
 
 // A wall surface a probe refers to: a tank face or an obstacle box (or one face of it).
@@ -69,6 +75,8 @@ struct ProbeWall {
     int face_axis = -1;     // tank face "x+" etc.: axis (0, 1, 2); -1 = none
     bool face_high = false; // the "+" face
     int box = -1;           // walls.boxes index; -1 = none
+
+    bool operator==(const ProbeWall&) const = default;
 };
 
 struct ProbeConfig {
@@ -90,12 +98,16 @@ struct ProbeConfig {
     int direction_axis = 0;             // surge front: axis of "+x", "-y", ...
     bool direction_negative = false;    // ... and its sign
     double min_thickness = 0;           // surge front [m]; 0 = 2 dx
+
+    bool operator==(const ProbeConfig&) const = default;
 };
 
 // A NeighbourSelection per operator; read by operators that take a neighbour set (WMLS gradient and
 // Laplacian, free-surface detection). The WCSPH kernel sums always use the radius set.
 struct OperatorNeighbours {
     NeighbourSelection gradient, laplacian, free_surface;
+
+    bool operator==(const OperatorNeighbours&) const = default;
 };
 
 // [projection]: the pressure Poisson solve of the projection scheme (docs/PROJECTION.md).
@@ -109,6 +121,8 @@ struct ProjectionSettings {
     double surface_density_ratio = 0;      // beta: also surface when n < beta n0 (0 = off)
     CorrectionGradient correction_gradient = CorrectionGradient::second_order;
     bool fluid_collision = true; // Koshizuka-type collision of fluid pairs closer than 0.8 dx
+
+    bool operator==(const ProjectionSettings&) const = default;
 };
 
 struct CaseConfig {
@@ -214,6 +228,8 @@ struct CaseConfig {
     // except time.end_time, case.description and the [checkpoint], [limits] and [runtime]
     // tables. A checkpoint continues only a case with the same fingerprint.
     std::string fingerprint;
+
+    bool operator==(const CaseConfig&) const = default;
 };
 
 } // namespace sluice

@@ -25,6 +25,11 @@ CaseConfig read_case(const std::string& path, const std::vector<std::string>& ov
 CaseConfig read_case_text(std::string_view text, const std::string& name,
                           const std::vector<std::string>& overrides = {});
 
+// Every key of every table of a case file, as a JSON array of objects {table, key, type, unit,
+// default, range, applies ("any", "wcsph" or "projection": the numerics.scheme that reads it;
+// refused under the other), when (a further condition, "KEY = VALUE"), doc} (`sluice schema`).
+std::string case_schema_json();
+
 // Upper bound on the fluid particle count a case may ask for (estimated from the blocks).
 inline constexpr double max_case_particles = 50e6;
 

@@ -21,6 +21,8 @@ struct NeighbourSelection {
     double candidate_radius_over_dx = 3.1; // convex-hull: candidates within this many dx
     bool union_with_radius = false;        // convex-hull: also every particle within the support
     bool hull_boundary = true; // convex-hull: keep points on hull edges/faces, not only corners
+
+    bool operator==(const NeighbourSelection&) const = default;
 };
 
 } // namespace sluice

@@ -3,30 +3,47 @@
 cases: every file must be refused by `sluice check` with exit code 2 and a message naming the
 key in expected.tsv (or, for broken syntax, the TOML parse position).
 
-Run from anywhere: /usr/bin/python3 tests/data/bad_cases/generate.py [OUT_DIR]
-(deterministic; the output is committed: rerun after changing this script and commit the
-result; a ctest regenerates into a temporary folder and compares).
+Run from anywhere: /usr/bin/python3 tests/data/bad_cases/generate.py [--sluice EXE] [OUT_DIR]
+(deterministic; the output is committed: rerun after changing this script or the case schema
+and commit the result; a ctest regenerates into a temporary folder and compares).
+
+The keys come from the case schema, `EXE schema` (default: build/release/sluice): for every
+key a wrong-type case, for a number with an interval range a value below and above it, for a
+string with allowed values an unknown one, and for a key of one scheme (numerics.scheme) a
+case of the other scheme carrying it. The hand-written mutations below add hostile values
+(overflow, non-finite numbers, names that escape the results folder) and structural damage.
 
 expected.tsv: <file>\t<what the message must name>, where the second column is a dotted key
 ('fluid.rho0', 'blocks[0].lo'), '@syntax' (a TOML parse error with line and column) or
 '@any' (either: a truncated file may still parse and then lack a key).
 """
+import argparse
 import copy
 import json
 import math
 import random
+import re
 import shutil
-import sys
+import subprocess
 import tomllib
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[2]
-OUT = Path(sys.argv[1]) if len(sys.argv) > 1 else HERE / "generated"
 BASES = {
     "db2": ROOT / "cases" / "dam_break_2d.toml",      # 2-D, dummy walls, probes
     "deb3": ROOT / "cases" / "debris_box_3d.toml",    # 3-D
     "per2": ROOT / "tests" / "data" / "uniform_flow_periodic.toml",  # periodic, no walls
+}
+# The base of each scheme for the schema-driven mutations.
+SCHEME_BASES = {"wcsph": ("db2", ROOT / "cases" / "dam_break_2d.toml"),
+                "projection": ("pdb2", ROOT / "cases" / "projection_dam_break_2d.toml")}
+# Valid entries added where a base lacks one, so that a mutation of one key meets no other
+# problem first: a wall plane, an obstacle clear of the fluid, a force probe.
+SAMPLE_ENTRIES = {
+    "walls.planes": {"point": [0.0, 0.0], "normal": [1.0, 0.0]},
+    "walls.boxes": {"lo": [1.0, 0.0], "hi": [1.2, 0.2]},
+    "force": {"name": "F", "type": "force", "face": "x+"},
 }
 
 # ------------------------------------------------------------------------------------------
@@ -359,11 +376,164 @@ def raw(base, text):
     return muts
 
 
+# ------------------------------------------------------------------------------------------
+# Schema-driven mutations: every key of `sluice schema`.
+
+
+def interval(text):
+    """(lo, lo_open, hi, hi_open) of a range written "[0.5, 4]", "(0, inf)" (words after a
+    ';' ignored), or None."""
+    m = re.match(r"^([\[(])\s*(-?[0-9.e+-]+|-?inf)\s*,\s*(-?[0-9.e+-]+|inf)\s*([\])])\s*(;|$)",
+                 text)
+    if not m:
+        return None
+    return float(m.group(2)), m.group(1) == "(", float(m.group(3)), m.group(4) == ")"
+
+
+def outside(spec):
+    """Values just outside the key's interval range: [(tag, value)]."""
+    r = interval(spec["range"])
+    if r is None or spec["type"] not in ("number", "integer"):
+        return []
+    lo, lo_open, hi, hi_open = r
+    integer = spec["type"] == "integer"
+    out = []
+    if math.isfinite(lo):
+        v = lo if lo_open else (lo - 1 if integer else lo - max(abs(lo), 1.0) / 2)
+        out.append(("below", int(v) if integer else v))
+    if math.isfinite(hi):
+        v = hi if hi_open else (hi + 1 if integer else hi + max(abs(hi), 1.0) / 2)
+        out.append(("above", int(v) if integer else v))
+    return out
+
+
+def wrong_type(spec):
+    t = spec["type"]
+    if t in ("number", "integer"):
+        return "heavy" if t == "number" else 1.5
+    if t == "boolean":
+        return "yes"
+    if t == "string":
+        return 3
+    if t.startswith("array") or t == "vector":
+        return 0.5
+    return {"x": 1}  # "number or \"every_step\"": a table is neither
+
+
+def toml_value(text):
+    try:
+        return tomllib.loads("v = " + text)["v"]
+    except tomllib.TOMLDecodeError:
+        return None
+
+
+def locate(doc, spec):
+    """The table (dict) holding the key in `doc`, made valid for it, and its display path."""
+    table = spec["table"]
+    if table in ("blocks", "probes", "walls.planes", "walls.boxes"):
+        parent = doc
+        *outer, last = table.split(".")
+        for p in outer:
+            parent = parent.setdefault(p, {})
+        entries = parent.setdefault(last, [])
+        kind = re.match(r'^type = "([a-z_]+)"', spec["when"])
+        if table == "probes" and kind:
+            index = next((i for i, e in enumerate(entries) if e["type"] == kind.group(1)), None)
+            if index is None:
+                entries.append(copy.deepcopy(SAMPLE_ENTRIES[kind.group(1)]))
+                index = len(entries) - 1
+        else:
+            if not entries:
+                entries.append(copy.deepcopy(SAMPLE_ENTRIES[table]))
+            index = 0
+        return entries[index], f"{table}[{index}]"
+    d = doc
+    for p in table.split("."):
+        d = d.setdefault(p, {})
+    return d, table
+
+
+def apply_when(doc, spec, entry):
+    """Sets the key's further condition ("profile = \"rotating\"", "projection.solver =
+    \"sor\""; the first of "a" | "b"), except a probe's type (chosen by locate)."""
+    m = re.match(r"^([a-z_.]+) = (.+?)( \|.*)?$", spec["when"])
+    if not m or m.group(1) == "type":
+        return
+    value = toml_value(m.group(2))
+    if "." in m.group(1):
+        set_at(m.group(1), value)(doc)
+    else:
+        entry[m.group(1)] = value
+
+
+def from_schema(schema):
+    """(base, name, doc, expected key) for every key of the schema."""
+    docs = {scheme: (base, tomllib.loads(path.read_text()))
+            for scheme, (base, path) in SCHEME_BASES.items()}
+    muts = []
+    for spec in schema:
+        if spec["type"] in ("table", "array of tables"):
+            continue
+        tag = f"{spec['table']}_{spec['key']}".replace(".", "_").strip("_")
+        scheme = "projection" if spec["applies"] == "projection" else "wcsph"
+        base, doc0 = docs[scheme]
+
+        def mutated(v, doc0=doc0, spec=spec):
+            doc = copy.deepcopy(doc0)
+            entry, path = locate(doc, spec)
+            apply_when(doc, spec, entry)
+            entry[spec["key"]] = v
+            return doc, f"{path}.{spec['key']}" if path else spec["key"]
+
+        values = [("type", wrong_type(spec))] + outside(spec)
+        if spec["type"] == "string" and spec["range"].startswith('"'):
+            values.append(("choice", "no-such-value"))
+        for kind, v in values:
+            doc, key = mutated(v)
+            muts.append((base, f"schema_{tag}_{kind}", doc, key))
+        if spec["applies"] != "any":
+            # The key in a case of the other scheme, with a value it would accept.
+            other = "wcsph" if spec["applies"] == "projection" else "projection"
+            obase, odoc = docs[other]
+            v = toml_value(spec["default"])
+            if v is None:
+                v = 0.5
+            doc = copy.deepcopy(odoc)
+            entry, path = locate(doc, spec)
+            entry[spec["key"]] = v
+            muts.append((obase, f"schema_{tag}_inapplicable", doc,
+                         f"{path}.{spec['key']}" if path else spec["key"]))
+    return muts
+
+
+def read_schema(args):
+    if args.schema:
+        return json.loads(Path(args.schema).read_text())
+    return json.loads(subprocess.run([args.sluice, "schema"], check=True, capture_output=True,
+                                     text=True).stdout)
+
+
 def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--sluice", default=str(ROOT / "build" / "release" / "sluice"),
+                    help="the executable whose `schema` command lists the keys")
+    ap.add_argument("--schema", help="the schema as JSON (instead of running --sluice)")
+    ap.add_argument("out", nargs="?", default=str(HERE / "generated"))
+    args = ap.parse_args()
+    OUT = Path(args.out)
+    schema = read_schema(args)
+    known = {f"{k['table']}.{k['key']}".strip(".") for k in schema}
+    for key in list(NUMBERS) + list(CHOICES):
+        plain = re.sub(r"\[\d+\]", "", key)
+        assert plain in known, f"hand-listed key {key} is not in the schema"
     if OUT.exists():
         shutil.rmtree(OUT)
     OUT.mkdir()
     rows = []
+    for base, name, doc, key in from_schema(schema):
+        out = f"{base}_{name}.toml"
+        (OUT / out).write_text(dump(doc))
+        rows.append((out, key))
     for base, path in BASES.items():
         text = path.read_text()
         doc = tomllib.loads(text)

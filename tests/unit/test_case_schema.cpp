@@ -1,0 +1,215 @@
+// The case schema (`sluice schema`, src/io/case_schema.cpp) against the reader: every key whose
+// documented default is a TOML value reads the same whether the key is absent or set to that
+// value, and every key the schema marks as one scheme's is refused under the other.
+#include "sluice/io/case_reader.hpp"
+#include "sluice/io/errors.hpp"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace sluice;
+
+namespace {
+
+// Dummy walls, a box obstacle, a wall plane and one probe of each kind but force (probes[i]:
+// pressure, water_level, surge_front): every table where a key can apply.
+const std::string kBase = R"(
+[case]
+name = "schema"
+dimension = 2
+
+[domain]
+lo = [0, 0]
+hi = [2.0, 1.0]
+
+[fluid]
+rho0 = 1000
+viscosity = 1e-3
+sound_speed = 30
+
+[particles]
+dx = 0.02
+
+[[blocks]]
+lo = [0, 0]
+hi = [0.5, 0.4]
+
+[numerics]
+scheme = "SCHEME"
+
+[walls]
+model = "dummy"
+tank_lo = [0, 0]
+tank_hi = [2, 1]
+tank_faces = ["x-", "x+", "y-"]
+
+[[walls.planes]]
+point = [1.9, 0]
+normal = [-1, 0]
+
+[[walls.boxes]]
+lo = [1.0, 0]
+hi = [1.2, 0.2]
+
+[time]
+end_time = 0.5
+
+[[probes]]
+name = "P"
+type = "pressure"
+position = [1.99, 0.05]
+
+[[probes]]
+name = "H"
+type = "water_level"
+x = 0.3
+
+[[probes]]
+name = "F"
+type = "surge_front"
+)";
+
+std::string base(const std::string& scheme) {
+    std::string t = kBase;
+    t.replace(t.find("SCHEME"), 6, scheme);
+    return t;
+}
+
+nlohmann::json schema() {
+    return nlohmann::json::parse(case_schema_json());
+}
+
+// A default that is one TOML value ("0.25", "\"quintic\"", "[\"id\"]"), not words.
+bool is_toml_value(const std::string& text) {
+    try {
+        const toml::table t = toml::parse("v = " + text);
+        return t.size() == 1 && t.contains("v");
+    } catch (const toml::parse_error&) {
+        return false;
+    }
+}
+
+// The --set path of a key in the base case: entries of arrays of tables by index (a probe of
+// the kind the key needs).
+std::string set_path(const std::string& table, const std::string& key, const std::string& when) {
+    if (table == "blocks" || table == "walls.planes" || table == "walls.boxes")
+        return table + ".0." + key;
+    if (table == "probes") {
+        int i = 0;
+        if (when.find("water_level") != std::string::npos)
+            i = 1;
+        else if (when.find("surge_front") != std::string::npos)
+            i = 2;
+        return "probes." + std::to_string(i) + "." + key;
+    }
+    return table.empty() ? key : table + "." + key;
+}
+
+// The "KEY = VALUE" condition of a key as a --set override (the first alternative of
+// "a" | "b"); empty when there is none or it is the probe kind (chosen by set_path).
+std::vector<std::string> when_overrides(const std::string& table, const std::string& when) {
+    if (when.empty() || when.rfind("type = ", 0) == 0)
+        return {};
+    const auto eq = when.find(" = ");
+    std::string key = when.substr(0, eq);
+    std::string value = when.substr(eq + 3);
+    value = value.substr(0, value.find(" |"));
+    if (key.find('.') == std::string::npos)
+        key = set_path(table, key, "");
+    return {key + "=" + value};
+}
+
+// Keys whose default is not a TOML value: computed from other keys, or "absent" means off.
+const std::set<std::string> kComputedDefaults = {"case.name",         "domain.periodic",
+                                                 "fluid.gravity",     "blocks.velocity",
+                                                 "numerics.dt",       "walls.tank_faces",
+                                                 "probes.diameter",   "probes.face",
+                                                 "probes.box",        "probes.lo",
+                                                 "probes.hi",         "probes.moment_about",
+                                                 "probes.y",          "probes.min_thickness",
+                                                 "limits.max_speed",  "limits.min_density",
+                                                 "limits.max_density"};
+
+} // namespace
+
+TEST_CASE("schema: fields of every key, no key twice") {
+    std::set<std::string> seen;
+    for (const auto& k : schema()) {
+        for (const char* f :
+             {"table", "key", "type", "unit", "default", "range", "applies", "when", "doc"})
+            REQUIRE_MESSAGE(k.contains(f), k.dump());
+        const std::string full = k["table"].get<std::string>() + "." + k["key"].get<std::string>();
+        CHECK_MESSAGE(seen.insert(full).second, "listed twice: " << full);
+        CHECK_MESSAGE(!k["doc"].get<std::string>().empty(), full);
+        const std::string applies = k["applies"];
+        CHECK((applies == "any" || applies == "wcsph" || applies == "projection"));
+    }
+}
+
+TEST_CASE("schema: a documented default is what the reader uses when the key is absent") {
+    int checked = 0;
+    for (const auto& k : schema()) {
+        const std::string table = k["table"], key = k["key"], type = k["type"];
+        const std::string def = k["default"], applies = k["applies"], when = k["when"];
+        const std::string full = table.empty() ? key : table + "." + key;
+        if (type == "table" || type == "array of tables" || def.rfind("required", 0) == 0)
+            continue;
+        if (!is_toml_value(def)) {
+            CHECK_MESSAGE(kComputedDefaults.count(full) == 1,
+                          full << ": default \"" << def
+                               << "\" is neither a TOML value nor a known computed default");
+            continue;
+        }
+        std::string text = base(applies == "projection" ? "projection" : "wcsph");
+        if (full == "walls.model") // its default ("none") allows no tank, box or plane
+            text.erase(text.find("[walls]"), text.find("[time]") - text.find("[walls]"));
+        const std::vector<std::string> cond = when_overrides(table, when);
+        std::vector<std::string> with = cond;
+        with.push_back(set_path(table, key, when) + "=" + def);
+        INFO("key ", full, " = ", def);
+        CaseConfig absent, given;
+        REQUIRE_NOTHROW(absent = read_case_text(text, "schema.toml", cond));
+        REQUIRE_NOTHROW(given = read_case_text(text, "schema.toml", with));
+        CHECK(absent == given);
+        ++checked;
+    }
+    CHECK(checked >= 50);
+}
+
+TEST_CASE("schema: a key of one scheme is refused under the other, naming it") {
+    int checked = 0;
+    for (const auto& k : schema()) {
+        const std::string table = k["table"], key = k["key"], applies = k["applies"];
+        if (applies == "any" || k["type"] == "table")
+            continue;
+        const std::string other = applies == "wcsph" ? "projection" : "wcsph";
+        const std::string full = table.empty() ? key : table + "." + key;
+        const std::string def = k["default"];
+        try {
+            (void)read_case_text(base(other), "schema.toml", {full + "=" + def});
+            FAIL("accepted " << full << " under " << other);
+        } catch (const CaseError& e) {
+            CHECK_MESSAGE(e.key() == full, e.what());
+            CHECK_MESSAGE(std::string(e.reason())
+                                  .find("applies only to numerics.scheme = \"" + applies + "\"") !=
+                              std::string::npos,
+                          e.what());
+        }
+        ++checked;
+    }
+    CHECK(checked >= 15);
+}
+
+TEST_CASE("schema: an empty [projection] table is refused under wcsph") {
+    try {
+        (void)read_case_text(base("wcsph") + "\n[projection]\n", "schema.toml");
+        FAIL("accepted [projection] under wcsph");
+    } catch (const CaseError& e) {
+        CHECK(e.key() == "projection");
+    }
+}
