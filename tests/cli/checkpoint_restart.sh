@@ -10,12 +10,7 @@
 #  - a task that throws (--debug-fail-*) stops the run with exit code 1 and its message.
 # Usage: checkpoint_restart.sh <sluice executable> <source dir>
 set -u
-exe=$(realpath "$1")
-src=$(realpath "$2")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
 
 case_file="$src/cases/dam_break_2d.toml"
 sets=(--set particles.dx=0.02 --set time.end_time=0.1 --set time.output_interval=0.025 --quiet)

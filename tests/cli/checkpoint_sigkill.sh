@@ -10,12 +10,7 @@
 # Needs h5dump (hdf5-tools) to print the checkpoint's step.
 # Usage: checkpoint_sigkill.sh <sluice executable> <source dir>
 set -u
-exe=$(realpath "$1")
-src=$(realpath "$2")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
 
 case_file="$src/cases/dam_break_2d.toml"
 sets=(--set particles.dx=0.02 --set time.end_time=0.2 --set time.output_interval=0.05

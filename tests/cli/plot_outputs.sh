@@ -8,17 +8,12 @@
 # Skipped (exit code 77) where Debian's python3 lacks matplotlib, h5py, numpy or PIL.
 # Usage: plot_outputs.sh <sluice exe> <source dir>
 set -u
-exe=$(realpath "$1")
-src=$(realpath "$2")
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
 py=/usr/bin/python3
 if ! "$py" -c "import matplotlib, h5py, numpy, PIL" 2>/dev/null; then
     echo "SKIP: $py lacks matplotlib, h5py, numpy or PIL (python3-matplotlib, python3-h5py)"
     exit 77
 fi
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 out="$work/out"
 "$exe" run "$src/cases/dam_break_2d.toml" --out "$out" --threads 2 --quiet \

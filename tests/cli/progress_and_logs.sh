@@ -4,12 +4,7 @@
 # log file results/<case>/logs/rank_0.log in every mode.
 # Usage: progress_and_logs.sh <sluice executable> <source dir>
 set -u
-exe=$(realpath "$1")
-src=$(realpath "$2")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
 short=(--threads 1 --set time.end_time=0.01 --set time.output_interval=0.005)
 case_file="$src/cases/dam_break_2d.toml"
 

@@ -5,10 +5,7 @@
 # files.
 # Usage: projection_restart.sh <sluice executable> <source dir>
 set -euo pipefail
-exe=$(realpath "$1")
-src=$(realpath "$2")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
 case_file="$src/cases/projection_hydrostatic_2d.toml"
 common=(--threads 1 -q --set time.output_interval=0.01 --set checkpoint.every_steps=10)
 "$exe" run "$case_file" --out "$work/a" "${common[@]}" --set time.end_time=0.02

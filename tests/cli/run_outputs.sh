@@ -3,12 +3,7 @@
 # with a header and time in the first column, and summary.json with the documented keys; and
 # `sluice info` describes the case. Usage: run_outputs.sh <sluice executable> <source dir>
 set -u
-exe=$(realpath "$1")
-src=$(realpath "$2")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
 
 "$exe" info "$src/cases/dam_break_2d.toml" >"$work/info.txt" || fail "info exit code $?"
 grep -q "3200 fluid" "$work/info.txt" || fail "info does not report the 3200 fluid particles"

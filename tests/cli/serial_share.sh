@@ -4,9 +4,7 @@
 # is the only thing in flight for 1 ms of the gap of step 1.
 # Usage: serial_share.sh SLUICE_EXE SOURCE_DIR (the executable is not used)
 set -euo pipefail
-src=$(realpath "$2")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
 cat >"$work/trace.json" <<'JSON'
 {"traceEvents": [
  {"name": "density", "ph": "X", "pid": 0, "tid": 0, "ts": 0, "dur": 4000, "args": {"group": 0, "step": 1}},

@@ -10,8 +10,6 @@
 # Usage: checkpoint_restart.sh SLUICE_EXE SOURCE_DIR MPIEXEC
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 case_file="$src/cases/dam_break_2d.toml"
 sets=(--set particles.dx=0.02 --set time.end_time=0.1 --set time.output_interval=0.025

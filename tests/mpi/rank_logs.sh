@@ -3,8 +3,6 @@
 # rank 0 talks on the terminal. Usage: rank_logs.sh <sluice executable> <source dir> <mpiexec>
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 "$mpiexec" --oversubscribe -np 2 "$exe" run "$src/cases/dam_break_2d.toml" --out "$work/out" \
     --threads 1 --set time.end_time=0.005 2>"$work/err.txt" || fail "exit code $?"
