@@ -3,6 +3,8 @@
 #include "sluice/io/case_reader.hpp"
 #include "sluice/io/errors.hpp"
 
+#include "case_files.hpp"
+
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -12,30 +14,9 @@
 
 using namespace sluice;
 namespace fs = std::filesystem;
+using sluice::testing::write_case;
 
 namespace {
-
-// A fresh directory per test binary run, removed at exit.
-const fs::path& temp_dir() {
-    static const struct Dir {
-        fs::path path;
-        Dir() {
-            path = fs::temp_directory_path() / ("sluice_case_reader_" + std::to_string(::getpid()));
-            fs::create_directories(path);
-        }
-        ~Dir() {
-            std::error_code ec;
-            fs::remove_all(path, ec);
-        }
-    } dir;
-    return dir.path;
-}
-
-std::string write_case(const std::string& name, const std::string& text) {
-    const fs::path p = temp_dir() / (name + ".toml");
-    std::ofstream(p) << text;
-    return p.string();
-}
 
 const std::string kValid2D = R"(
 [case]
@@ -234,7 +215,7 @@ TEST_CASE("default tank faces are all faces of the dimension") {
 
 TEST_CASE("unreadable files and syntax errors") {
     try {
-        (void)read_case((temp_dir() / "does_not_exist.toml").string());
+        (void)read_case((sluice::testing::scratch_dir() / "does_not_exist.toml").string());
         FAIL("no error");
     } catch (const CaseError& e) {
         CHECK(contains(e.what(), "does_not_exist.toml"));

@@ -10,6 +10,8 @@
 #include "sluice/solver/run.hpp"
 #include "sluice/solver/simulation.hpp"
 
+#include "case_files.hpp"
+
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 #include <tbb/global_control.h>
@@ -23,30 +25,9 @@
 
 using namespace sluice;
 namespace fs = std::filesystem;
+using sluice::testing::write_case;
 
 namespace {
-
-// A fresh directory per test binary run, removed at exit.
-const fs::path& temp_dir() {
-    static const struct Dir {
-        fs::path path;
-        Dir() {
-            path = fs::temp_directory_path() / ("sluice_wall_boxes_" + std::to_string(::getpid()));
-            fs::create_directories(path);
-        }
-        ~Dir() {
-            std::error_code ec;
-            fs::remove_all(path, ec);
-        }
-    } dir;
-    return dir.path;
-}
-
-std::string write_case(const std::string& name, const std::string& text) {
-    const fs::path p = temp_dir() / (name + ".toml");
-    std::ofstream(p) << text;
-    return p.string();
-}
 
 // A 0.2 m x 0.3 m column collapsing towards a 6 cm thick, 1 m tall solid box at x = 0.4 m.
 std::string barrier_case(const std::string& box_lo = "[0.4, 0.0]",
