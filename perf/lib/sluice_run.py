@@ -1,4 +1,6 @@
-"""Running `sluice` from the benchmark scripts (perf/throughput, perf/speed_vs_error).
+"""Running `sluice` from the benchmark scripts: every perf/ Python script that starts a run
+(perf/throughput, perf/speed_vs_error, perf/impact, perf/stability, perf/projection) starts
+it through run_sluice().
 
 One run = one `sluice run` process. Its peak resident memory comes from the kernel's
 accounting of that very child (os.wait4 -> ru_maxrss), so no external `time` tool is needed
@@ -85,13 +87,18 @@ def toml_value(v: object) -> str:
 
 def run_sluice(sluice: Path, case: Path, out_dir: Path, threads: int,
                overrides: dict[str, object] | None = None, nice: int = 0,
-               echo: bool = True) -> Run:
-    """Runs `sluice run CASE --threads T --out DIR -q --set k=v ...` and waits for it."""
+               echo: bool = True, sets: list[str] | None = None) -> Run:
+    """Runs `sluice run CASE --threads T --out DIR -q --set k=v ...` and waits for it.
+
+    `overrides` are Python values (written as TOML); `sets` are "key=value" strings already in
+    TOML (as a user types them after --set), passed on verbatim after the overrides."""
     if out_dir.exists():
         shutil.rmtree(out_dir)
     cmd = [str(sluice), "run", str(case), "--threads", str(threads), "--out", str(out_dir), "-q"]
     for k, v in (overrides or {}).items():
         cmd += ["--set", f"{k}={toml_value(v)}"]
+    for kv in sets or []:
+        cmd += ["--set", kv]
     if echo:
         print("   $ " + " ".join(cmd), flush=True)
     preexec = (lambda: os.nice(nice)) if nice else None

@@ -14,7 +14,7 @@ import argparse
 import csv
 import json
 import math
-import subprocess
+import sys
 import tempfile
 from pathlib import Path
 
@@ -25,7 +25,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
-SLUICE = ROOT / "build" / "release" / "sluice"
+sys.path.insert(0, str(ROOT / "perf" / "lib"))
+import sluice_run as sr  # noqa: E402
+
+SLUICE = sr.DEFAULT_SLUICE
 A, G = 0.4, 9.81  # column width [m], gravity
 
 
@@ -60,12 +63,14 @@ def main() -> None:
         work = args.out or tmp
         for case, label in (("dam_break_2d", "WCSPH"), ("projection_dam_break_2d", "projection")):
             out = Path(work) / case
-            subprocess.run(
-                ["nice", "-n", "10", str(SLUICE), "run", str(ROOT / "cases" / f"{case}.toml"),
-                 "--out", str(out), "--threads", str(args.threads), "-q",
-                 "--set", f"time.end_time={args.end}", "--set", "output.snapshots=false",
-                 "--set", "probes.0.interval=0.001", "--set", "probes.1.interval=0.005"],
-                check=True)
+            run = sr.run_sluice(SLUICE, ROOT / "cases" / f"{case}.toml", out, args.threads,
+                                nice=10, sets=[f"time.end_time={args.end}",
+                                               "output.snapshots=false",
+                                               "probes.0.interval=0.001",
+                                               "probes.1.interval=0.005"])
+            if not run.ok:
+                raise SystemExit(f"{case}: sluice failed (exit {run.returncode}): "
+                                 f"{run.stderr_tail}")
             front = read_probe(out / "probes" / "front.csv")
             press = read_probe(out / "probes" / "p2_right_wall.csv")
             T, Z = front[:, 0] * T_scale, front[:, 1] / A

@@ -13,10 +13,9 @@ import glob
 import json
 import math
 import os
-import resource
-import subprocess
 import sys
 import time
+from pathlib import Path
 
 import h5py
 import numpy as np
@@ -24,6 +23,9 @@ from scipy.spatial import cKDTree
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "perf", "lib"))
+import sluice_run as sr  # noqa: E402
+
 G = 9.81
 
 
@@ -69,9 +71,10 @@ class Run:
 def run_case(args, case_file, label, dx, overrides):
     """Runs sluice on one case; returns a Run, or None (with the reason printed) if it failed."""
     out = os.path.join(args.out, label)
-    cmd = [args.sluice, "run", os.path.join(ROOT, case_file), "--out", out, "--quiet",
-           "--threads", str(args.threads), "--set", f"particles.dx={dx}"]
-    for o in overrides + args.set:
+    sets = [f"particles.dx={dx}"] + overrides + args.set
+    cmd = [args.sluice, "run", os.path.join(ROOT, case_file), "--threads", str(args.threads),
+           "--out", out, "-q"]  # as sluice_run.run_sluice starts it
+    for o in sets:
         cmd += ["--set", o]
     print("$ " + " ".join(cmd[:1] + [os.path.relpath(c, ROOT) if c.startswith(ROOT) else c
                                      for c in cmd[1:]]), flush=True)
@@ -80,19 +83,13 @@ def run_case(args, case_file, label, dx, overrides):
             run = Run(label, out, dx, json.load(f), float("nan"))
         print(f"  reusing the finished run in {out}: {run.cost()}")
         return run
-    if os.path.isdir(out):
-        for old in glob.glob(os.path.join(out, "snapshots", "*.h5")):
-            os.remove(old)
-        if os.path.exists(os.path.join(out, "summary.json")):
-            os.remove(os.path.join(out, "summary.json"))
     t0 = time.monotonic()
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    proc = subprocess.run(cmd, capture_output=True, text=True)
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    proc = sr.run_sluice(Path(args.sluice), Path(ROOT) / case_file, Path(out), args.threads,
+                         echo=False, sets=sets)
+    cpu = proc.cpu_s
     if proc.returncode != 0:
         print(f"  run failed after {time.monotonic() - t0:.1f} s (exit {proc.returncode}): "
-              f"{proc.stderr.strip()[-400:]}")
+              f"{proc.stderr_tail.strip()[-400:]}")
         return None
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
