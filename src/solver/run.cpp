@@ -10,6 +10,7 @@
 #include "sluice/io/run_log.hpp"
 #include "sluice/io/snapshot_writer.hpp"
 #include "sluice/io/summary.hpp"
+#include "sluice/solver/output_schedule.hpp"
 #include "sluice/solver/simulation.hpp"
 
 #include "probe_sampling.hpp"
@@ -123,60 +124,28 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                     : std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes, D);
     }
 
-    const double out_every = cfg.output_interval > 0 ? cfg.output_interval : cfg.end_time;
-    std::vector<double> probe_every, probe_next;
-    std::vector<double> probe_last(cfg.probes.size(), -1.0); // time of each probe's last row
-    for (const auto& p : cfg.probes) {
-        probe_every.push_back(p.interval > 0 ? p.interval : out_every);
-        probe_next.push_back(0.0);
-    }
-    double out_next = 0.0;
-    double last_output_time = -1;
-    if (resumed) {
-        probe_next = start.probe_next;
-        // The checkpoint was written after the sample at its time: every probe due then
-        // (an "every_step" one always) has its row in the file already.
-        probe_last.assign(cfg.probes.size(), sim.time());
-        out_next = start.out_next;
-        last_output_time = start.last_output_time;
-    }
+    OutputSchedule schedule(cfg);
+    if (resumed)
+        schedule.resume(start, sim.time());
     // Every rank takes the same decisions (same time). The probes are evaluated where the
     // particles are (probe_sampling.hpp); the particles are gathered on rank 0 only for a
     // snapshot.
     auto sample = [&](bool force) {
         const double t = sim.time();
-        const double eps = 1e-12 * cfg.end_time;
-        // An "every_step" probe is due after every step (and at the start).
-        // Never twice at the same time (the final forced sample after an every-step one).
-        std::vector<std::size_t> due;
-        for (std::size_t k = 0; k < cfg.probes.size(); ++k)
-            if ((force || cfg.probes[k].every_step || t >= probe_next[k] - eps) &&
-                t != probe_last[k])
-                due.push_back(k);
-        const bool snap_due =
-            (force || t >= out_next - eps) && cfg.snapshots && t != last_output_time;
-        if (!due.empty()) {
-            const auto rows = sample_probes(sim, due);
-            for (std::size_t n = 0; n < due.size(); ++n) {
-                const std::size_t k = due[n];
-                if (root)
-                    probe_files->write(k, t, rows[n]);
-                probe_last[k] = t;
-                while (probe_next[k] <= t + eps)
-                    probe_next[k] += probe_every[k];
-            }
+        const OutputSchedule::Due due = schedule.due(t, force);
+        if (!due.probes.empty()) {
+            const auto rows = sample_probes(sim, due.probes);
+            if (root)
+                for (std::size_t n = 0; n < due.probes.size(); ++n)
+                    probe_files->write(due.probes[n], t, rows[n]);
         }
-        std::optional<Particles<D>> all;
-        if (snap_due)
-            all = sim.gather_particles();
-        if (force || t >= out_next - eps) {
-            if (snap_due && root)
+        if (due.snapshot) {
+            const Particles<D> all = sim.gather_particles();
+            if (root)
                 log.debug("snapshot {} at t = {:.6g} s (step {})",
-                          snapshots->write(*all, t, sim.steps()), t, sim.steps());
-            last_output_time = t;
-            while (out_next <= t + eps)
-                out_next += out_every;
+                          snapshots->write(all, t, sim.steps()), t, sim.steps());
         }
+        schedule.done(due, t);
     };
 
     RunResult result;
@@ -215,10 +184,10 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         c.case_fingerprint = cfg.fingerprint;
         c.ranks = sim.comm().size();
         c.solver = sim.solver_state();
-        c.output.out_next = out_next;
-        c.output.last_output_time = last_output_time;
+        c.output.out_next = schedule.out_next();
+        c.output.last_output_time = schedule.last_output_time();
         c.output.wall_seconds = start.wall_seconds + loop_seconds();
-        c.output.probe_next = probe_next;
+        c.output.probe_next = schedule.probe_next();
         c.output.probe_bytes = probe_files->bytes();
         if (snapshots)
             for (const auto& w : snapshots->written()) {
@@ -312,7 +281,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             return result;
         }
     }
-    if (sim.time() != last_output_time)
+    if (sim.time() != schedule.last_output_time())
         sample(true);
     progress.finish();
 
