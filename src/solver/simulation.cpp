@@ -20,6 +20,7 @@
 #include <cstring>
 #include <fmt/format.h>
 #include <limits>
+#include <optional>
 
 namespace sluice {
 
@@ -308,21 +309,34 @@ void Simulation<D>::build_graph() {
         return;
     }
     using tasks::Reach;
+    using What = typename HaloFields<D>::What;
+    // The WCSPH step, one row per stage: its name, what it computes (wcsph_stages.cpp), how
+    // far it reads, and the halo field its results travel as to the other ranks' next stages
+    // (before the first stage the state travels). The graph and its halo exchanges follow
+    // from these rows alone.
+    struct StageRow {
+        const char* name;
+        StageKind kind;
+        Reach reach;
+        std::optional<What> sends;
+    };
+    std::vector<StageRow> rows;
+    rows.push_back({"density", StageKind::density, Reach::neighbourhood, What::pressure});
+    if (cfg_.walls == WallModel::dummy)
+        rows.push_back({"walls", StageKind::walls, Reach::neighbourhood, What::walls});
+    rows.push_back({"accel", StageKind::accel, Reach::neighbourhood, std::nullopt});
+    // The continuity rate reads the neighbours' kicked velocities; summation needs nothing.
+    rows.push_back({"kick", StageKind::kick, Reach::self,
+                    continuity_ ? std::optional<What>(What::velocity) : std::nullopt});
+    rows.push_back({"drift", StageKind::drift, continuity_ ? Reach::neighbourhood : Reach::self,
+                    std::nullopt});
+
     std::vector<tasks::StageSpec> specs;
     stage_kinds_.clear();
-    specs.push_back({"density", Reach::neighbourhood});
-    stage_kinds_.push_back(StageKind::density);
-    if (cfg_.walls == WallModel::dummy) {
-        specs.push_back({"walls", Reach::neighbourhood});
-        stage_kinds_.push_back(StageKind::walls);
+    for (const StageRow& row : rows) {
+        specs.push_back({row.name, row.reach});
+        stage_kinds_.push_back(row.kind);
     }
-    specs.push_back({"accel", Reach::neighbourhood});
-    stage_kinds_.push_back(StageKind::accel);
-    specs.push_back({"kick", Reach::self});
-    stage_kinds_.push_back(StageKind::kick);
-    // The continuity rate reads the neighbours' kicked velocities; summation needs nothing.
-    specs.push_back({"drift", continuity_ ? Reach::neighbourhood : Reach::self});
-    stage_kinds_.push_back(StageKind::drift);
     group_limits_.assign(topo_.neighbours.size(), {});
     group_failure_.assign(topo_.neighbours.size(), {});
     group_speed_.assign(topo_.neighbours.size(), 0.0);
@@ -334,24 +348,15 @@ void Simulation<D>::build_graph() {
 
     tasks::HaloWiring wiring;
     if (comm_.parallel()) {
-        using What = typename HaloFields<D>::What;
-        auto stage_of = [&](StageKind k) {
-            return static_cast<int>(std::find(stage_kinds_.begin(), stage_kinds_.end(), k) -
-                                    stage_kinds_.begin());
-        };
         halo_->what.clear();
         wiring.exchanges.push_back({"state", -1});
         halo_->what.push_back(What::state);
-        wiring.exchanges.push_back({"pressure", stage_of(StageKind::density)});
-        halo_->what.push_back(What::pressure);
-        if (cfg_.walls == WallModel::dummy) {
-            wiring.exchanges.push_back({"walls", stage_of(StageKind::walls)});
-            halo_->what.push_back(What::walls);
-        }
-        if (continuity_) {
-            wiring.exchanges.push_back({"velocity", stage_of(StageKind::kick)});
-            halo_->what.push_back(What::velocity);
-        }
+        for (std::size_t stage = 0; stage < rows.size(); ++stage)
+            if (rows[stage].sends) {
+                wiring.exchanges.push_back(
+                    {HaloFields<D>::name(*rows[stage].sends), static_cast<int>(stage)});
+                halo_->what.push_back(*rows[stage].sends);
+            }
         wiring.peers = peers_;
         wiring.boundary = boundary_groups();
         wiring.data = halo_.get();

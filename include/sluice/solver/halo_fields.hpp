@@ -31,6 +31,20 @@ class HaloFields final : public tasks::HaloData {
 public:
     enum class What { state, pressure, walls, velocity };
     std::vector<What> what; // per exchange of the graph
+    // The exchange's name in traces and profiles.
+    static const char* name(What w) {
+        switch (w) {
+        case What::state:
+            return "state";
+        case What::pressure:
+            return "pressure";
+        case What::walls:
+            return "walls";
+        case What::velocity:
+            return "velocity";
+        }
+        return "?";
+    }
     // Whether the state exchange records the halo cells' particle ranges: only on steps that
     // rebuild the neighbour lists (between rebuilds the particles stay where they were sorted,
     // although they may have moved into the next cell).
