@@ -100,19 +100,12 @@ Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
     return box;
 }
 
-// The wall-load probes' pair terms: the momentum equation's own parameters.
+// The wall-load probes' pair terms: the momentum equation's own parameters, loads relative to
+// the background pressure.
 template <int D>
 WallLoadParams<D> wall_load_params(const Simulation<D>& sim) {
-    const MomentumParams<D>& m = sim.momentum();
-    WallLoadParams<D> w;
-    w.p_floor = m.p_floor;
-    w.p_gauge = m.p_floor; // the background pressure
-    w.mu = m.mu;
-    w.wall_viscous = m.wall_viscous;
-    w.alpha = m.alpha;
-    w.wall_artificial = m.wall_artificial;
-    w.c0 = m.c0;
-    w.h = m.h;
+    WallLoadParams<D> w = wall_load_params(sim.momentum());
+    w.p_gauge = w.p_floor; // the background pressure
     w.riemann = sim.config().dissipation == Dissipation::riemann;
     w.no_slip = sim.config().no_slip;
     return w;

@@ -102,14 +102,7 @@ TEST_CASE("wall load: Newton's third law against the momentum equation") {
             t.fluid_momentum_rate(kernel, [&](const auto& nb, const auto& k, CellIndex c) {
                 acceleration(nb, k, m, c, t.P, std::span<Vec<2>>(t.P.a));
             });
-        WallLoadParams<2> w;
-        w.p_floor = m.p_floor;
-        w.mu = m.mu;
-        w.wall_viscous = m.wall_viscous;
-        w.alpha = m.alpha;
-        w.wall_artificial = m.wall_artificial;
-        w.c0 = m.c0;
-        w.h = h;
+        WallLoadParams<2> w = wall_load_params(m);
         w.adami_v_bc = false; // the v_bc the momentum loop read
         const WallLoad load = wall_load(t.P, kernel, w, t.walls(), Vec<2>(Vec<2>::Zero()));
         // Fluid-fluid pairs cancel; what is left is the walls' push, opposite to their load.

@@ -21,6 +21,7 @@
 #include "sluice/core/particles.hpp"
 #include "sluice/physics/eos.hpp"
 #include "sluice/physics/kernels.hpp"
+#include "sluice/physics/momentum.hpp"
 #include "sluice/physics/riemann.hpp"
 
 #include <array>
@@ -43,6 +44,22 @@ struct WallLoadParams {
     bool no_slip = true;    // how v_bc is recomputed: mirrored (no-slip) or copied mean velocity
     bool adami_v_bc = true; // recompute v_bc from the fluid; false: read P.v_bc
 };
+
+// The pair terms of the momentum equation (momentum.hpp) the loads mirror: its viscosities,
+// sound speed, smoothing length and clipping floor. The caller sets what the momentum
+// parameters do not hold (p_gauge, riemann, no_slip, adami_v_bc).
+template <int D>
+WallLoadParams<D> wall_load_params(const MomentumParams<D>& m) {
+    WallLoadParams<D> w;
+    w.p_floor = m.p_floor;
+    w.mu = m.mu;
+    w.wall_viscous = m.wall_viscous;
+    w.alpha = m.alpha;
+    w.wall_artificial = m.wall_artificial;
+    w.c0 = m.c0;
+    w.h = m.h;
+    return w;
+}
 
 // Force [N in 3-D; N/m in 2-D, per metre of width] and moment about a point [N m; 2-D: N m/m,
 // only the z component] on a set of wall particles; the sums are in double.
