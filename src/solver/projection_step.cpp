@@ -304,10 +304,7 @@ void Simulation<D>::correct_stage(int group) {
                     offset -= list.shift[p];
                 v = physics::wall_collision<D>(v, offset, collision);
             }
-        const DriftedState<D> moved =
-            projection_drift<D>(P_.x[i], v, P_.rho[i], Real(dt_), planes_, Real(cfg_.restitution));
-        Vec<D> x = moved.x;
-        v = moved.v;
+        Vec<D> x = projection_drift<D>(P_.x[i], v, Real(dt_), planes_, Real(cfg_.restitution));
         grid_.wrap(x);
         P_.a[i] = (v - P_.v[i]) / dt_;
         P_.v_half[i] = v;

@@ -35,16 +35,16 @@ DriftedState<D> leapfrog_drift(const Vec<D>& x, Vec<D>& v_half, const Vec<D>& a,
 }
 
 // Projection scheme (docs/PROJECTION.md, P8): x^{n+1} = x^n + dt v^{n+1} with the corrected
-// velocity; the density is not advanced (the scheme keeps rho0).
+// velocity v, which a reflection turns; the density is not advanced (the scheme keeps rho0).
 template <int D>
-DriftedState<D> projection_drift(const Vec<D>& x, const Vec<D>& v, Real rho, Real dt,
-                                 const std::vector<Plane<D>>& planes, Real restitution) {
-    DriftedState<D> s{x + dt * v, v, rho};
+Vec<D> projection_drift(const Vec<D>& x, Vec<D>& v, Real dt, const std::vector<Plane<D>>& planes,
+                        Real restitution) {
+    Vec<D> moved = x + dt * v;
     if (!planes.empty()) {
         Vec<D> unused = v;
-        reflect(planes, restitution, s.x, unused, s.v);
+        reflect(planes, restitution, moved, unused, v);
     }
-    return s;
+    return moved;
 }
 
 } // namespace sluice
