@@ -19,8 +19,8 @@
 //                 radius 1.1 rc: the same reach as the hull variant;
 //   hull+radius : convex-hull selection among the candidates within rc (corners and edge
 //                 points), united with the radius set, fit radius 1.1 rc.
-#include "sluice/physics/options.hpp"
 #include "sluice/physics/neighbour_selection.hpp"
+#include "sluice/physics/options.hpp"
 #include "sluice/physics/wmls.hpp"
 
 #include <algorithm>

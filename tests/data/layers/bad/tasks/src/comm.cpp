@@ -1,4 +1,4 @@
 // Fixture for the layer check: tasks includes physics (spaces after the #).
-#include "sluice/core/cell_grid.hpp"
-#  include "sluice/physics/eos.hpp"
 #include "sluice/tasks/comm.hpp"
+#include "sluice/core/cell_grid.hpp"
+#include "sluice/physics/eos.hpp"
