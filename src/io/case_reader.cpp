@@ -11,6 +11,7 @@
 #include "case_probes.hpp"
 #include "case_schema.hpp"
 #include "case_toml.hpp"
+#include "case_walls.hpp"
 #include "toml_section.hpp"
 
 #include <fmt/format.h>
@@ -32,12 +33,14 @@ namespace sluice {
 namespace {
 
 using case_file::Applies;
+using case_file::check_blocks_in_tank;
 using case_file::join_list;
 using case_file::kAxis;
 using case_file::kMaxCoordinate;
 using case_file::kMaxNameLength;
 using case_file::kMaxOutputs;
 using case_file::read_probes;
+using case_file::read_walls;
 using case_file::Reader;
 using case_file::Section;
 using case_file::slack;
@@ -84,8 +87,6 @@ const std::vector<std::pair<std::string, bool>> kHullPoints = {{"vertices", fals
                                                                {"boundary", true}};
 const std::vector<std::pair<std::string, EosType>> kEos = {{"linear", EosType::linear},
                                                            {"tait", EosType::tait}};
-const std::vector<std::pair<std::string, WallModel>> kWalls = {
-    {"none", WallModel::none}, {"reflective", WallModel::reflective}, {"dummy", WallModel::dummy}};
 const std::vector<std::pair<std::string, VelocityProfile>> kProfiles = {
     {"uniform", VelocityProfile::uniform},
     {"taylor_green", VelocityProfile::taylor_green},
@@ -166,15 +167,6 @@ void read_fluid(const Section& s, CaseConfig& c) {
     s.require(c.background_pressure >= 0, "background_pressure",
               fmt::format("must be >= 0, got {}", c.background_pressure));
     s.require_at_most(c.background_pressure, 1e12, "background_pressure", "Pa");
-}
-
-// Two axis-aligned boxes share volume (more than the slack on every axis).
-bool boxes_overlap(const Triple& lo1, const Triple& hi1, const Triple& lo2, const Triple& hi2,
-                   std::size_t dim, double eps) {
-    bool overlap = true;
-    for (std::size_t a = 0; a < dim; ++a)
-        overlap = overlap && std::min(hi1[a], hi2[a]) - std::max(lo1[a], lo2[a]) > eps;
-    return overlap;
 }
 
 // Keys of the rotating and strain profiles: each needs its rate, only in 2-D, and the strain
@@ -393,169 +385,6 @@ void read_projection(const Section& s, CaseConfig& c) {
     p.correction_gradient =
         s.choice("correction_gradient", p.correction_gradient, kCorrectionGradients);
     p.fluid_collision = s.boolean("fluid_collision").value_or(p.fluid_collision);
-}
-
-void read_walls(const Section& s, CaseConfig& c) {
-    c.walls = s.choice("model", c.walls, kWalls);
-    const double eps = slack(c);
-    const auto dim = static_cast<std::size_t>(c.dimension);
-    if (c.walls != WallModel::none) {
-        c.tank_lo = s.required_triple("tank_lo", "lower corner of the tank [m]; needed when "
-                                                 "walls.model is not \"none\"");
-        c.tank_hi = s.required_triple("tank_hi", "upper corner of the tank [m]; needed when "
-                                                 "walls.model is not \"none\"");
-        for (std::size_t a = 0; a < dim; ++a) {
-            s.require(c.tank_lo[a] < c.tank_hi[a], "tank_hi",
-                      fmt::format("must be above walls.tank_lo on every axis; on {}: lo = {}, "
-                                  "hi = {}",
-                                  kAxis[a], c.tank_lo[a], c.tank_hi[a]));
-            s.require(c.tank_lo[a] >= c.domain_lo[a] - eps, "tank_lo",
-                      fmt::format("the tank lies outside the domain: {} = {} is below "
-                                  "domain.lo = {}",
-                                  kAxis[a], c.tank_lo[a], c.domain_lo[a]));
-            s.require(c.tank_hi[a] <= c.domain_hi[a] + eps, "tank_hi",
-                      fmt::format("the tank lies outside the domain: {} = {} is above "
-                                  "domain.hi = {}",
-                                  kAxis[a], c.tank_hi[a], c.domain_hi[a]));
-        }
-        std::vector<std::string> all = {"x-", "x+", "y-", "y+"};
-        if (c.dimension == 3)
-            all.insert(all.end(), {"z-", "z+"});
-        c.tank_faces = s.strings("tank_faces").value_or(all);
-        std::set<std::string> seen;
-        for (const auto& f : c.tank_faces) {
-            s.require(std::find(all.begin(), all.end(), f) != all.end(), "tank_faces",
-                      fmt::format("unknown face \"{}\"; allowed in {}-D: {}", f, c.dimension,
-                                  join_list(all)));
-            s.require(seen.insert(f).second, "tank_faces",
-                      fmt::format("face \"{}\" is listed twice", f));
-            const auto a = static_cast<std::size_t>(f[0] - 'x');
-            s.require(
-                !c.periodic[a], "tank_faces",
-                fmt::format("face \"{}\" carries a wall but the {} axis is periodic", f, kAxis[a]));
-        }
-    } else {
-        // Without walls there is no tank; keys given anyway are still checked for type.
-        (void)s.triple("tank_lo");
-        (void)s.triple("tank_hi");
-        (void)s.strings("tank_faces");
-    }
-    c.restitution = s.number("restitution", c.restitution);
-    s.require(c.restitution >= 0 && c.restitution <= 1, "restitution",
-              fmt::format("must be in [0, 1], got {}", c.restitution));
-    c.no_slip = s.boolean("no_slip").value_or(c.no_slip);
-
-    for (const auto& p : s.entries("planes")) {
-        WallPlane w;
-        w.point = p.required_triple("point", "a point on the plane [m]");
-        w.normal = p.required_triple("normal", "normal pointing into the fluid side");
-        p.require_triple_at_most(w.point, kMaxCoordinate, "point", "m");
-        // Scaled by its largest component first, so that neither [1e200, 1e200] overflows
-        // nor [1e-200, 0] underflows on the way to a unit vector.
-        double largest = 0;
-        for (double x : w.normal)
-            largest = std::max(largest, std::abs(x));
-        p.require(largest > 0, "normal", "must not be the zero vector");
-        double len2 = 0;
-        for (double& x : w.normal) {
-            x /= largest;
-            len2 += x * x;
-        }
-        // Stored as a unit vector so the solver can use it for distances directly.
-        const double len = std::sqrt(len2);
-        for (double& x : w.normal)
-            x /= len;
-        c.planes.push_back(w);
-    }
-
-    // Boxes are shells of dummy particles `layers` sites deep (as the tank's walls); their sum
-    // is held to the particle limit here, before anything is allocated.
-    const double layers = std::ceil(kernel_support_factor(c.kernel) * c.h_over_dx);
-    double box_particles = 0;
-    for (const auto& b : s.entries("boxes")) {
-        b.require(c.walls == WallModel::dummy, "lo",
-                  "wall boxes are made of dummy wall particles: they need walls.model = \"dummy\"");
-        WallBox box;
-        box.lo = b.required_triple("lo", "lower corner of the solid box [m]");
-        box.hi = b.required_triple("hi", "upper corner of the solid box [m]");
-        for (std::size_t a = 0; a < dim; ++a) {
-            b.require(box.lo[a] < box.hi[a], "hi",
-                      fmt::format("must be above lo on every axis; on {}: lo = {}, hi = {}",
-                                  kAxis[a], box.lo[a], box.hi[a]));
-            b.require(box.lo[a] >= c.domain_lo[a] - eps, "lo",
-                      fmt::format("the box lies outside the domain: {} = {} is below "
-                                  "domain.lo = {}",
-                                  kAxis[a], box.lo[a], c.domain_lo[a]));
-            b.require(box.hi[a] <= c.domain_hi[a] + eps, "hi",
-                      fmt::format("the box lies outside the domain: {} = {} is above "
-                                  "domain.hi = {}",
-                                  kAxis[a], box.hi[a], c.domain_hi[a]));
-            // Its wall layers are laid from each face inwards, the first dx/2 inside: a box
-            // thinner than dx cannot hold one layer with its surface where the case puts it.
-            b.require(box.hi[a] - box.lo[a] >= c.dx * (1 - 1e-9), "hi",
-                      fmt::format("the box is {} m thick along {}, less than dx = {} m: it "
-                                  "cannot hold one layer of wall particles",
-                                  box.hi[a] - box.lo[a], kAxis[a], c.dx));
-        }
-        // Tank wall layers lie outside the walled faces; a box reaching past one would put
-        // two wall particles on one site.
-        for (const auto& f : c.tank_faces) {
-            const auto a = static_cast<std::size_t>(f[0] - 'x');
-            const bool low = f[1] == '-';
-            const bool inside =
-                low ? box.lo[a] >= c.tank_lo[a] - eps : box.hi[a] <= c.tank_hi[a] + eps;
-            b.require(inside, low ? "lo" : "hi",
-                      fmt::format("the box extends beyond the tank wall \"{}\" at {} = {}", f,
-                                  kAxis[a], low ? c.tank_lo[a] : c.tank_hi[a]));
-        }
-        for (std::size_t j = 0; j < c.boxes.size(); ++j)
-            b.require(!boxes_overlap(box.lo, box.hi, c.boxes[j].lo, c.boxes[j].hi, dim, eps), "lo",
-                      fmt::format("the box overlaps walls.boxes[{}]", j));
-        for (std::size_t j = 0; j < c.blocks.size(); ++j)
-            b.require(!boxes_overlap(box.lo, box.hi, c.blocks[j].lo, c.blocks[j].hi, dim, eps),
-                      "lo", fmt::format("the box overlaps the fluid of blocks[{}]", j));
-        double all = 1, deep = 1; // lattice sites of the box, and those below its shell
-        for (std::size_t a = 0; a < dim; ++a) {
-            const double n = std::max(1.0, std::round((box.hi[a] - box.lo[a]) / c.dx));
-            all *= n;
-            deep *= std::max(0.0, n - 2 * layers);
-        }
-        box_particles += all - deep;
-        b.require(box_particles <= max_case_particles, "hi",
-                  fmt::format("the wall boxes would hold about {:.3g} particles (their surface "
-                              "{:g} lattice sites deep), above the limit of {:.0f} million; "
-                              "increase dx or make the boxes smaller",
-                              box_particles, layers, max_case_particles / 1e6));
-        c.boxes.push_back(box);
-    }
-}
-
-// Fluid must start on the inner side of every wall-carrying tank face.
-void check_blocks_in_tank(const Section& root, const CaseConfig& c) {
-    if (c.walls == WallModel::none)
-        return;
-    const double eps = slack(c);
-    for (std::size_t i = 0; i < c.blocks.size(); ++i) {
-        const auto& b = c.blocks[i];
-        for (const auto& f : c.tank_faces) {
-            const auto a = static_cast<std::size_t>(f[0] - 'x');
-            const bool low = f[1] == '-';
-            const bool inside = low ? b.lo[a] >= c.tank_lo[a] - eps : b.hi[a] <= c.tank_hi[a] + eps;
-            if (!inside)
-                root.reader().fail(
-                    fmt::format("blocks[{}].{}", i, low ? "lo" : "hi"),
-                    fmt::format("the block extends beyond the tank wall \"{}\" at {} = {}", f,
-                                kAxis[a], low ? c.tank_lo[a] : c.tank_hi[a]));
-            // The lattice keeps its last particle centre dx/4 inside a walled upper face
-            // (block_lattice_count): a block that leaves no room for one is refused.
-            if (!low && std::floor((c.tank_hi[a] - b.lo[a]) / c.dx + 0.25 + 1e-9) < 1)
-                root.reader().fail(
-                    fmt::format("blocks[{}].hi", i),
-                    fmt::format("the block starts {} m from the tank wall \"{}\", less than "
-                                "3/4 dx = {} m: no particle fits on its lattice",
-                                c.tank_hi[a] - b.lo[a], f, 0.75 * c.dx));
-        }
-    }
 }
 
 void read_time(const Section& s, CaseConfig& c) {
