@@ -6,6 +6,11 @@
 #include "sluice/core/rebin.hpp"
 #include "sluice/physics/momentum.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
 namespace sluice::testing {
 
 struct Lattice {
@@ -35,6 +40,22 @@ struct Lattice {
             P.p_over_rho2[i] = P.p[i] / (P.rho[i] * P.rho[i]);
             P.volume[i] = P.mass[i] / P.rho[i];
         }
+    }
+    // The continuity tests' field: v = (sin 2 pi x, 0), whose rate is -rho0 2 pi cos(2 pi x).
+    void set_sine_velocity() {
+        for (std::size_t i = 0; i < P.size(); ++i)
+            P.v[i] = Vec<2>(std::sin(2 * std::numbers::pi * P.x[i][0]), 0);
+    }
+    // Largest |drho - exact| over the particles, and the largest |exact|, for that field.
+    [[nodiscard]] std::pair<double, double> sine_continuity_error() const {
+        const double k = 2 * std::numbers::pi;
+        double err = 0, ref = 0;
+        for (std::size_t i = 0; i < P.size(); ++i) {
+            const double exact = -1000 * k * std::cos(k * P.x[i][0]);
+            err = std::max(err, std::abs(P.drho[i] - exact));
+            ref = std::max(ref, std::abs(exact));
+        }
+        return {err, ref};
     }
     void accelerate(const MomentumParams<2>& prm) {
         derive_factors();
