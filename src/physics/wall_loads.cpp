@@ -48,11 +48,11 @@ struct FluidCells {
     }
 };
 
-template <int D, class K>
-WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<D>& prm,
-                   const std::vector<std::size_t>& walls, const Vec<D>& c) {
-    WallLoad out;
-    out.wall_particles = walls.size();
+// Calls on_force(j, F_j, pairs_j) for every wall particle j of `walls`, in order, with the
+// force the fluid exerts on it (double) and the number of fluid particles that contributed.
+template <int D, class K, class OnForce>
+void for_each_wall_force(const Particles<D>& P, const K& kernel, const WallLoadParams<D>& prm,
+                         const std::vector<std::size_t>& walls, OnForce&& on_force) {
     const Real support = kernel.support();
     const Real support2 = support * support;
     const FluidCells<D> fluid(P, support);
@@ -79,6 +79,7 @@ WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<
         const Real pj = std::max(P.p[j], prm.p_floor);
         const Real m_j = P.mass[j];
         Eigen::Matrix<double, D, 1> f = Eigen::Matrix<double, D, 1>::Zero();
+        std::size_t pairs = 0;
         fluid.around(xj, [&](std::size_t i) {
             const Vec<D> dx = P.x[i] - xj; // x_i - x_j, as in the momentum loop
             const Real r2 = dx.squaredNorm();
@@ -106,48 +107,58 @@ WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<
             if (laminar)
                 a_ij += two_mu / (rho_i * rho_j) * (dWr * r2 / (r2 + eta2)) * v_ij;
             f -= (double(P.mass[i]) * double(m_j)) * a_ij.template cast<double>();
-            ++out.pairs;
+            ++pairs;
         });
-        const Eigen::Matrix<double, D, 1> r = (xj - c).template cast<double>();
-        for (int a = 0; a < D; ++a)
-            out.force[static_cast<std::size_t>(a)] += f[a];
-        if constexpr (D == 2) {
-            out.moment[2] += r[0] * f[1] - r[1] * f[0];
-        } else {
-            out.moment[0] += r[1] * f[2] - r[2] * f[1];
-            out.moment[1] += r[2] * f[0] - r[0] * f[2];
-            out.moment[2] += r[0] * f[1] - r[1] * f[0];
-        }
+        on_force(j, f, pairs);
     }
-    return out;
 }
 
 template <int D, class K>
-Real sensor_with(const Particles<D>& P, const K& kernel, const Vec<D>& centre, int axis,
-                 Real diameter, Real spacing) {
-    const Real support = kernel.support();
-    const Real support2 = support * support;
-    const Real radius = diameter / 2;
-    // The particles that can reach any sample point.
-    std::vector<std::size_t> near;
-    const Real reach2 = (radius + support) * (radius + support);
-    for (std::size_t j = 0; j < P.size(); ++j)
-        if ((P.x[j] - centre).squaredNorm() < reach2)
-            near.push_back(j);
-    // Sample points: centres of the n^(D-1) cells of a lattice of spacing <= `spacing` over the
-    // diameter's square, kept where inside the disc (every one in 2-D).
-    const int n = std::max(1, static_cast<int>(std::ceil(diameter / spacing - Real(1e-9))));
-    const Real step = diameter / Real(n);
+WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<D>& prm,
+                   const std::vector<std::size_t>& walls, const Vec<D>& c) {
+    WallLoad out;
+    out.wall_particles = walls.size();
+    for_each_wall_force(
+        P, kernel, prm, walls, [&](std::size_t j, const auto& f, std::size_t pairs) {
+            out.pairs += pairs;
+            const Eigen::Matrix<double, D, 1> r = (P.x[j] - c).template cast<double>();
+            for (int a = 0; a < D; ++a)
+                out.force[static_cast<std::size_t>(a)] += f[a];
+            if constexpr (D == 2) {
+                out.moment[2] += r[0] * f[1] - r[1] * f[0];
+            } else {
+                out.moment[0] += r[1] * f[2] - r[2] * f[1];
+                out.moment[1] += r[2] * f[0] - r[0] * f[2];
+                out.moment[2] += r[0] * f[1] - r[1] * f[0];
+            }
+        });
+    return out;
+}
+
+// The axes along the wall surface of normal `axis` (the second unused in 2-D).
+template <int D>
+std::array<int, 2> tangent_axes(int axis) {
     std::array<int, 2> tangent{};
     for (int a = 0, k = 0; a < D; ++a)
         if (a != axis)
             tangent[static_cast<std::size_t>(k++)] = a;
+    return tangent;
+}
+
+// A sensor face's sample points: centres of the n^(D-1) cells of a lattice of spacing <=
+// `spacing` over the diameter's square, kept where inside the disc (every one in 2-D); a
+// zero diameter gives the centre alone.
+template <int D>
+std::vector<Vec<D>> face_samples(const SensorFace<D>& face, Real spacing) {
+    const Real radius = face.diameter / 2;
+    const int n = std::max(1, static_cast<int>(std::ceil(face.diameter / spacing - Real(1e-9))));
+    const Real step = face.diameter / Real(n);
+    const std::array<int, 2> tangent = tangent_axes<D>(face.normal_axis);
     const int n2 = D == 3 ? n : 1;
-    double sum = 0;
-    int points = 0, wet = 0;
+    std::vector<Vec<D>> out;
     for (int u = 0; u < n; ++u)
         for (int w = 0; w < n2; ++w) {
-            Vec<D> y = centre;
+            Vec<D> y = face.centre;
             const Real du = (Real(u) + Real(0.5)) * step - radius;
             y[tangent[0]] += du;
             Real r2t = du * du;
@@ -158,25 +169,105 @@ Real sensor_with(const Particles<D>& P, const K& kernel, const Vec<D>& centre, i
             }
             if (D == 3 && n > 1 && r2t > radius * radius)
                 continue;
-            Real num = 0, den = 0;
-            bool fluid = false;
-            for (std::size_t j : near) {
-                const Real r2 = (P.x[j] - y).squaredNorm();
-                if (r2 >= support2)
-                    continue;
-                const Real wv = kernel.W(std::sqrt(r2)) * P.mass[j] / P.rho[j];
-                num += P.p[j] * wv;
-                den += wv;
-                fluid = fluid || P.kind[j] == Kind::fluid;
-            }
-            ++points;
-            if (den > 0)
-                sum += double(num / den);
-            wet += fluid ? 1 : 0;
+            out.push_back(y);
         }
+    return out;
+}
+
+template <int D, class K>
+Real sensor_with(const Particles<D>& P, const K& kernel, const SensorFace<D>& face, Real spacing) {
+    const Real support = kernel.support();
+    const Real support2 = support * support;
+    const Real radius = face.diameter / 2;
+    // The particles that can reach any sample point.
+    std::vector<std::size_t> near;
+    const Real reach2 = (radius + support) * (radius + support);
+    for (std::size_t j = 0; j < P.size(); ++j)
+        if ((P.x[j] - face.centre).squaredNorm() < reach2)
+            near.push_back(j);
+    double sum = 0;
+    int points = 0, wet = 0;
+    for (const Vec<D>& y : face_samples(face, spacing)) {
+        Real num = 0, den = 0;
+        bool fluid = false;
+        for (std::size_t j : near) {
+            const Real r2 = (P.x[j] - y).squaredNorm();
+            if (r2 >= support2)
+                continue;
+            const Real wv = kernel.W(std::sqrt(r2)) * P.mass[j] / P.rho[j];
+            num += P.p[j] * wv;
+            den += wv;
+            fluid = fluid || P.kind[j] == Kind::fluid;
+        }
+        ++points;
+        if (den > 0)
+            sum += double(num / den);
+        wet += fluid ? 1 : 0;
+    }
     if (wet == 0 || points == 0)
         return std::numeric_limits<Real>::quiet_NaN();
     return Real(sum / points);
+}
+
+// Largest tangential offset (max norm) between a point and a wall particle on the surface.
+template <int D>
+Real tangential_distance(const Vec<D>& a, const Vec<D>& b, const std::array<int, 2>& tangent) {
+    Real d = std::abs(a[tangent[0]] - b[tangent[0]]);
+    if constexpr (D == 3)
+        d = std::max(d, std::abs(a[tangent[1]] - b[tangent[1]]));
+    return d;
+}
+
+template <int D, class K>
+Real force_sensor_with(const Particles<D>& P, const K& kernel, const WallLoadParams<D>& prm,
+                       const SensorFace<D>& face, Real wall_dx) {
+    const int axis = face.normal_axis;
+    const std::array<int, 2> tangent = tangent_axes<D>(axis);
+    const Real surface = face.centre[axis];
+    const Real reach = face.diameter / 2 + wall_dx; // tangential reach of the columns kept
+    // The wall particles behind the face, every layer the fluid reaches through the surface.
+    std::vector<std::size_t> walls;
+    for (std::size_t j = 0; j < P.size(); ++j) {
+        const Real depth = Real(face.into_wall) * (P.x[j][axis] - surface);
+        if (P.kind[j] == Kind::wall && depth > 0 && depth < kernel.support() &&
+            tangential_distance<D>(P.x[j], face.centre, tangent) <= reach)
+            walls.push_back(j);
+    }
+    std::vector<double> normal_force(walls.size());
+    std::size_t pairs = 0, k = 0;
+    for_each_wall_force(P, kernel, prm, walls, [&](std::size_t, const auto& f, std::size_t n) {
+        normal_force[k++] = double(face.into_wall) * f[axis];
+        pairs += n;
+    });
+    if (pairs == 0)
+        return std::numeric_limits<Real>::quiet_NaN();
+    // Each sample point reads the traction of the wall column (all layers at one tangential
+    // position) whose patch of the surface holds it: the nearest column, if within half a
+    // spacing; the column's force over its patch's area, wall_dx^(D-1).
+    const double patch = D == 3 ? double(wall_dx) * double(wall_dx) : double(wall_dx);
+    const Real same_column = wall_dx / 4;
+    double sum = 0;
+    std::size_t points = 0;
+    for (const Vec<D>& y : face_samples(face, wall_dx / 8)) {
+        ++points;
+        std::size_t nearest = walls.size();
+        Real best = wall_dx / 2 * (1 + Real(1e-6));
+        for (std::size_t m = 0; m < walls.size(); ++m) {
+            const Real d = tangential_distance<D>(P.x[walls[m]], y, tangent);
+            if (d < best) {
+                best = d;
+                nearest = m;
+            }
+        }
+        if (nearest == walls.size())
+            continue; // off the wall's edge: no wall carries this part of the face
+        double column = 0;
+        for (std::size_t m = 0; m < walls.size(); ++m)
+            if (tangential_distance<D>(P.x[walls[m]], P.x[walls[nearest]], tangent) < same_column)
+                column += normal_force[m];
+        sum += column / patch;
+    }
+    return Real(double(prm.p_gauge) + sum / double(points));
 }
 
 } // namespace
@@ -230,11 +321,16 @@ WallLoad wall_load(const Particles<D>& P, const AnyKernel<D>& kernel, const Wall
 }
 
 template <int D>
-Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel, const Vec<D>& centre,
-                          int normal_axis, Real diameter, Real spacing) {
-    return std::visit(
-        [&](const auto& k) { return sensor_with(P, k, centre, normal_axis, diameter, spacing); },
-        kernel);
+Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
+                          const SensorFace<D>& face, Real spacing) {
+    return std::visit([&](const auto& k) { return sensor_with(P, k, face, spacing); }, kernel);
+}
+
+template <int D>
+Real wall_force_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
+                       const WallLoadParams<D>& prm, const SensorFace<D>& face, Real wall_dx) {
+    return std::visit([&](const auto& k) { return force_sensor_with(P, k, prm, face, wall_dx); },
+                      kernel);
 }
 
 template void refresh_dummy_walls<2>(Particles<2>&, const AnyKernel<2>&, const Eos&, const Vec<2>&,
@@ -249,9 +345,13 @@ template WallLoad wall_load<2>(const Particles<2>&, const AnyKernel<2>&, const W
                                const std::vector<std::size_t>&, const Vec<2>&);
 template WallLoad wall_load<3>(const Particles<3>&, const AnyKernel<3>&, const WallLoadParams<3>&,
                                const std::vector<std::size_t>&, const Vec<3>&);
-template Real wall_pressure_sensor<2>(const Particles<2>&, const AnyKernel<2>&, const Vec<2>&, int,
-                                      Real, Real);
-template Real wall_pressure_sensor<3>(const Particles<3>&, const AnyKernel<3>&, const Vec<3>&, int,
-                                      Real, Real);
+template Real wall_pressure_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
+                                      const SensorFace<2>&, Real);
+template Real wall_pressure_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
+                                      const SensorFace<3>&, Real);
+template Real wall_force_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
+                                   const WallLoadParams<2>&, const SensorFace<2>&, Real);
+template Real wall_force_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
+                                   const WallLoadParams<3>&, const SensorFace<3>&, Real);
 
 } // namespace sluice

@@ -1,6 +1,6 @@
-// Wall loads and area sensors (physics/wall_loads.hpp) on hand-built particle sets: Newton's
-// third law against the momentum equation's fluid accelerations, the moment, the sensor on
-// a hydrostatic field; and the directed surge front and point water gauge (probes.hpp).
+// Wall loads (physics/wall_loads.hpp) on hand-built particle sets: Newton's third law against
+// the momentum equation's fluid accelerations, the moment; and the directed surge front and
+// point water gauge (probes.hpp). The area sensors: test_wall_sensors.cpp.
 #include "sluice/core/neighbourhood.hpp"
 #include "sluice/core/rebin.hpp"
 #include "sluice/physics/momentum.hpp"
@@ -176,55 +176,6 @@ TEST_CASE("wall load: parts add up, moment is r x F, background pressure removed
     const WallLoad none = wall_load(t.P, kernel, w, all, c);
     CHECK(std::abs(none.force[0]) < 1e-9);
     CHECK(std::abs(none.force[1]) < 1e-9);
-}
-
-TEST_CASE("area pressure sensor on a hydrostatic side wall reads rho g (H - y)") {
-    // Water 0.5 m deep against a wall at x = 0 (x < 0: 4 layers of wall particles carrying the
-    // Adami pressure of a hydrostatic field, which is rho g (H - y) itself).
-    const Real dx = 0.01, H = 0.5;
-    Particles<2> P;
-    for (int j = -4; j < 50; ++j)
-        for (int i = -4; i < 30; ++i) {
-            const Vec<2> x((i + 0.5) * dx, (j + 0.5) * dx);
-            const bool wall = i < 0 || j < 0;
-            P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<2>::Zero(), kRho,
-                        kRho * dx * dx);
-            P.p.back() = kRho * kG * (H - x[1]);
-        }
-    const AnyKernel<2> kernel = make_kernel<2>(KernelType::wendland_c2, Real(1.5) * dx);
-    for (Real y : {Real(0.1), Real(0.25), Real(0.4)})
-        for (Real d : {Real(0), Real(0.005), Real(0.05)}) {
-            const Real p = wall_pressure_sensor(P, kernel, Vec<2>(0, y), 0, d, dx / 4);
-            INFO("y = " << y << ", diameter = " << d);
-            CHECK(p == doctest::Approx(kRho * kG * (H - y)).epsilon(0.002));
-        }
-    // On the floor (normal y): a 4 cm sensor averages the uniform floor pressure.
-    CHECK(wall_pressure_sensor(P, kernel, Vec<2>(Real(0.15), 0), 1, Real(0.04), dx / 4) ==
-          doctest::Approx(kRho * kG * H).epsilon(0.002));
-    // Dry: far above the water.
-    Particles<2> dry;
-    dry.push_back(0, Kind::wall, Vec<2>(-dx / 2, Real(2)), Vec<2>::Zero(), kRho, kRho * dx * dx);
-    CHECK(std::isnan(wall_pressure_sensor(dry, kernel, Vec<2>(0, Real(2)), 0, dx, dx / 4)));
-}
-
-TEST_CASE("area sensor in 3-D averages over its disc") {
-    const Real dx = 0.02, H = 0.3;
-    Particles<3> P;
-    for (int k = -3; k < 15; ++k)
-        for (int j = -3; j < 10; ++j)
-            for (int i = 0; i < 10; ++i) {
-                const Vec<3> x((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx);
-                const bool wall = j < 0 || k < 0;
-                P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<3>::Zero(), kRho,
-                            kRho * dx * dx * dx);
-                P.p.back() = kRho * kG * (H - x[2]);
-            }
-    const AnyKernel<3> kernel = make_kernel<3>(KernelType::wendland_c2, Real(1.5) * dx);
-    // A sensor on the y = 0 wall, centre at z = 0.15: the disc is symmetric about its centre,
-    // so a linear field averages to the centre's value.
-    const Real p =
-        wall_pressure_sensor(P, kernel, Vec<3>(Real(0.1), 0, Real(0.15)), 1, Real(0.06), dx / 4);
-    CHECK(p == doctest::Approx(kRho * kG * (H - Real(0.15))).epsilon(0.003));
 }
 
 TEST_CASE("directed surge front follows a thin tip, ignores droplets") {

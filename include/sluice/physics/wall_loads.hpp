@@ -1,8 +1,9 @@
 #pragma once
 // Loads on walls and wall-mounted pressure sensors: what the fluid exerts on a group of dummy
 // wall particles (a tank face, an obstacle, a part of either), and the pressure a transducer
-// of finite size on a wall surface reads. Pure functions over all particles, with their own
-// cell hash (O(N) per call): they run only at probe times and leave the step's loops alone.
+// of finite size on a wall surface reads (from those forces, or interpolated). Pure functions over
+// all particles, with their own cell hash (O(N) per call): they run only at probe times and leave
+// the step's loops alone.
 //
 // Force. Every fluid-wall pair (i fluid, j wall) of the momentum equation (momentum.hpp,
 // riemann.hpp) accelerates i by a_ij; the wall particle j receives -m_i a_ij (Newton's third
@@ -81,23 +82,48 @@ template <int D>
 WallLoad wall_load(const Particles<D>& P, const AnyKernel<D>& kernel, const WallLoadParams<D>& prm,
                    const std::vector<std::size_t>& walls, const Vec<D>& moment_point);
 
-// Area-averaged wall pressure: what a flush-mounted transducer of diameter `diameter` reads.
-// The sensor face is the disc (3-D) or segment (2-D) of that diameter centred on `centre` in
-// the wall surface whose normal is axis `normal_axis`. It is sampled on a lattice of spacing
-// at most `spacing` (cells of the lattice clipped to the disc, their centres as sample
-// points; at least the centre), and each sample point's pressure is the Shepard
-// interpolation over fluid AND wall particles
+// A pressure sensor's face on a wall surface: a disc (3-D) or segment (2-D) of `diameter`
+// centred on `centre`, in the surface whose normal is axis `normal_axis`; the wall lies on the
+// side `into_wall` (+1: at larger coordinates along the normal, -1: smaller). Diameter 0: a
+// point of the surface.
+template <int D>
+struct SensorFace {
+    Vec<D> centre = Vec<D>::Zero();
+    int normal_axis = 0;
+    int into_wall = 1;
+    Real diameter = 0;
+};
+
+// What a flush-mounted transducer reads: the normal force the fluid exerts on the wall under its
+// face, per unit area. The face is sampled on a lattice of spacing wall_dx/8 (face_samples);
+// each sample point reads the traction of the wall column under it: the force on every wall
+// particle at that tangential position (all layers behind the surface), normal component, from
+// the pair terms of `wall_load`, divided by the column's share of the surface, wall_dx^(D-1).
+// The reading is the mean over the sample points plus prm.p_gauge (an absolute pressure, like
+// the fluid's). Because it is the momentum equation's own wall force, a lone spray particle
+// at the wall adds only its own small share (m_i m_j ...), and a wall that the scheme never
+// lets the fluid pull (pressures clipped at p_floor in wall pairs) never reads suction below
+// p_floor. A face smaller than wall_dx reads the column it lies on. NaN when no fluid particle
+// is within the kernel support of the face's wall particles (a dry sensor).
+template <int D>
+Real wall_force_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
+                       const WallLoadParams<D>& prm, const SensorFace<D>& face, Real wall_dx);
+
+// The alternative reading: the fluid's pressure interpolated on the face. The face is sampled
+// on a lattice of spacing at most `spacing` (face_samples), and each sample point's pressure
+// is the Shepard interpolation over fluid AND wall particles
 //   p(y) = sum_j p_j W_j V_j / sum_j W_j V_j,   V_j = m_j / rho_j.
 // On the surface the kernel reaches as far into the wall as into the fluid; the dummy wall
 // particles carry the fluid pressure extrapolated through the wall with the hydrostatic
 // gradient (Adami et al. 2012), so the sum is centred on the surface and has no one-sided
 // bias (a fluid-only Shepard sum there would read the mean pressure about one smoothing
 // length inside the fluid: rho g h too low on a floor). The reading is the mean of the
-// sample points (equal area weights). NaN when no sample point has a fluid particle within
-// the support (a dry sensor).
+// sample points (equal area weights). Shepard normalisation makes a lone droplet at the wall
+// read its full pressure, which is why the force reading is the default. NaN when no sample
+// point has a fluid particle within the support (a dry sensor).
 template <int D>
-Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel, const Vec<D>& centre,
-                          int normal_axis, Real diameter, Real spacing);
+Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
+                          const SensorFace<D>& face, Real spacing);
 
 // The Adami state of every dummy wall particle (pressure, density, mass = rho_w wall_volume)
 // from the fluid around it, as the step's walls stage computes it (walls.hpp,
@@ -122,8 +148,12 @@ extern template WallLoad wall_load<3>(const Particles<3>&, const AnyKernel<3>&,
                                       const WallLoadParams<3>&, const std::vector<std::size_t>&,
                                       const Vec<3>&);
 extern template Real wall_pressure_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
-                                             const Vec<2>&, int, Real, Real);
+                                             const SensorFace<2>&, Real);
 extern template Real wall_pressure_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
-                                             const Vec<3>&, int, Real, Real);
+                                             const SensorFace<3>&, Real);
+extern template Real wall_force_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
+                                          const WallLoadParams<2>&, const SensorFace<2>&, Real);
+extern template Real wall_force_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
+                                          const WallLoadParams<3>&, const SensorFace<3>&, Real);
 
 } // namespace sluice

@@ -1,0 +1,197 @@
+// Area pressure sensors on walls (physics/wall_loads.hpp): the force reading (the fluid's normal
+// force on the wall columns under the face) and the interpolated reading, on hand-built
+// hydrostatic fields in 2-D and 3-D, a lone spray particle, suction, and the identity between a
+// sensor that covers whole columns and the force probe on those columns.
+#include "sluice/physics/wall_loads.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using namespace sluice;
+
+namespace {
+
+constexpr Real kRho = 1000, kG = 9.81;
+
+// Water H deep against a wall at x = 0 (x < 0: four layers) over a floor (y < 0: four layers),
+// on a lattice of spacing dx, every particle carrying the hydrostatic pressure rho g (H - y)
+// (what the Adami extrapolation gives the wall particles of a hydrostatic field).
+struct HydrostaticCorner {
+    Real dx = 0.01, H = 0.5;
+    Particles<2> P;
+    HydrostaticCorner() {
+        for (int j = -4; j < 50; ++j)
+            for (int i = -4; i < 30; ++i) {
+                const Vec<2> x((i + 0.5) * dx, (j + 0.5) * dx);
+                const bool wall = i < 0 || j < 0;
+                P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<2>::Zero(), kRho,
+                            kRho * dx * dx);
+                P.p.back() = kRho * kG * (H - x[1]);
+            }
+    }
+};
+
+// The pair terms of a case with dummy walls: no clipping below zero pressure, no viscosity.
+template <int D>
+WallLoadParams<D> inviscid(Real h) {
+    WallLoadParams<D> w;
+    w.h = h;
+    w.c0 = 20;
+    return w;
+}
+
+} // namespace
+
+TEST_CASE("force sensor on a hydrostatic side wall reads rho g (H - y)") {
+    const HydrostaticCorner t;
+    const Real dx = t.dx;
+    const AnyKernel<2> kernel = make_kernel<2>(KernelType::wendland_c2, Real(1.5) * dx);
+    const WallLoadParams<2> prm = inviscid<2>(Real(1.5) * dx);
+    // Faces of several sizes, centred on a column boundary (0.25) or a column (0.105, 0.405):
+    // a face symmetric about its centre averages the columns' linear profile to the centre's.
+    for (Real y : {Real(0.105), Real(0.25), Real(0.405)})
+        for (Real d : {Real(0.01), Real(0.05)}) {
+            const SensorFace<2> face{Vec<2>(0, y), 0, -1, d};
+            const Real p = wall_force_sensor(t.P, kernel, prm, face, dx);
+            INFO("y = " << y << ", diameter = " << d);
+            CHECK(p == doctest::Approx(kRho * kG * (t.H - y)).epsilon(0.01));
+        }
+    // The floor under a 4 cm face carries the full depth.
+    const SensorFace<2> floor{Vec<2>(Real(0.15), 0), 1, -1, Real(0.04)};
+    CHECK(wall_force_sensor(t.P, kernel, prm, floor, dx) ==
+          doctest::Approx(kRho * kG * t.H).epsilon(0.01));
+    // A face of zero size reads the column it lies on: the mean over that column's dx.
+    const SensorFace<2> point{Vec<2>(0, Real(0.103)), 0, -1, 0};
+    CHECK(wall_force_sensor(t.P, kernel, prm, point, dx) ==
+          doctest::Approx(kRho * kG * (t.H - Real(0.105))).epsilon(0.01));
+    // The wrong side of the surface holds no wall: nothing loads it.
+    const SensorFace<2> outside{Vec<2>(0, Real(0.25)), 0, 1, Real(0.05)};
+    CHECK(std::isnan(wall_force_sensor(t.P, kernel, prm, outside, dx)));
+}
+
+TEST_CASE("force sensor covering whole columns is the force probe on them over their area") {
+    const HydrostaticCorner t;
+    const Real dx = t.dx;
+    const AnyKernel<2> kernel = make_kernel<2>(KernelType::wendland_c2, Real(1.5) * dx);
+    WallLoadParams<2> prm = inviscid<2>(Real(1.5) * dx);
+    prm.p_gauge = 1000; // loads relative to a background pressure; the reading adds it back
+    // Columns at y = 0.205 ... 0.235 (four), the face [0.2, 0.24] covers them exactly.
+    const SensorFace<2> face{Vec<2>(0, Real(0.22)), 0, -1, 4 * dx};
+    const WallLoad load = wall_load(
+        t.P, kernel, prm, wall_particles_in(t.P, Vec<2>(-1, Real(0.2)), Vec<2>(0, Real(0.24))),
+        Vec<2>(0, 0));
+    const double expected = prm.p_gauge - load.force[0] / (4 * double(dx));
+    CHECK(double(wall_force_sensor(t.P, kernel, prm, face, dx)) ==
+          doctest::Approx(expected).epsilon(1e-12));
+}
+
+TEST_CASE("a lone spray particle loads the wall by its share, not by its pressure") {
+    // One fluid particle half a dx from a wall, at 10 kPa (the pressure it carried out of the
+    // bulk). Shepard interpolation on the face reads its full pressure; the wall feels the
+    // pair force of one particle, spread by the kernel over the columns it reaches.
+    const Real dx = 0.01;
+    Particles<2> P;
+    for (int j = 0; j < 60; ++j)
+        for (int i = -3; i < 0; ++i)
+            P.push_back(P.size(), Kind::wall, Vec<2>((i + 0.5) * dx, (j + 0.5) * dx),
+                        Vec<2>::Zero(), kRho, kRho * dx * dx);
+    P.push_back(P.size(), Kind::fluid, Vec<2>(dx / 2, Real(0.305)), Vec<2>::Zero(), kRho,
+                kRho * dx * dx);
+    P.p.back() = 10000;
+    const AnyKernel<2> kernel = make_kernel<2>(KernelType::wendland_c2, Real(1.5) * dx);
+    Eos eos;
+    eos.rho0 = kRho;
+    eos.c0 = 20;
+    refresh_dummy_walls(P, kernel, eos, Vec<2>(0, -kG), dx * dx);
+    const SensorFace<2> face{Vec<2>(0, Real(0.305)), 0, -1, dx};
+    const Real interpolated = wall_pressure_sensor(P, kernel, face, dx / 4);
+    const Real force = wall_force_sensor(P, kernel, inviscid<2>(Real(1.5) * dx), face, dx);
+    INFO("interpolated " << interpolated << " Pa, force " << force << " Pa");
+    CHECK(interpolated == doctest::Approx(10000).epsilon(0.02));
+    CHECK(force > 0);
+    CHECK(force < Real(0.5) * interpolated); // 0.41 here: the kernel spreads it over ~5 columns
+}
+
+TEST_CASE("force sensor reads no suction where the wall pairs clip at the floor pressure") {
+    HydrostaticCorner t;
+    for (std::size_t i = 0; i < t.P.size(); ++i)
+        t.P.p[i] = -2000; // tension everywhere
+    const Real dx = t.dx;
+    const AnyKernel<2> kernel = make_kernel<2>(KernelType::wendland_c2, Real(1.5) * dx);
+    WallLoadParams<2> prm = inviscid<2>(Real(1.5) * dx);
+    prm.p_floor = 0; // the momentum equation's clipping in fluid-wall pairs (momentum.hpp)
+    const SensorFace<2> face{Vec<2>(0, Real(0.25)), 0, -1, Real(0.05)};
+    CHECK(wall_force_sensor(t.P, kernel, prm, face, dx) == 0);
+    CHECK(wall_pressure_sensor(t.P, kernel, face, dx / 4) == doctest::Approx(-2000));
+}
+
+TEST_CASE("force sensor in 3-D averages its disc") {
+    const Real dx = 0.02, H = 0.3;
+    Particles<3> P;
+    for (int k = -3; k < 15; ++k)
+        for (int j = -3; j < 10; ++j)
+            for (int i = 0; i < 10; ++i) {
+                const Vec<3> x((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx);
+                const bool wall = j < 0 || k < 0;
+                P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<3>::Zero(), kRho,
+                            kRho * dx * dx * dx);
+                P.p.back() = kRho * kG * (H - x[2]);
+            }
+    const AnyKernel<3> kernel = make_kernel<3>(KernelType::wendland_c2, Real(1.5) * dx);
+    // A disc on the y = 0 wall centred at z = 0.15, symmetric about its centre.
+    const SensorFace<3> face{Vec<3>(Real(0.1), 0, Real(0.15)), 1, -1, Real(0.06)};
+    const Real p = wall_force_sensor(P, kernel, inviscid<3>(Real(1.5) * dx), face, dx);
+    CHECK(p == doctest::Approx(kRho * kG * (H - Real(0.15))).epsilon(0.01));
+}
+
+TEST_CASE("interpolated sensor on a hydrostatic side wall reads rho g (H - y)") {
+    // Water 0.5 m deep against a wall at x = 0 (x < 0: 4 layers of wall particles carrying the
+    // Adami pressure of a hydrostatic field, which is rho g (H - y) itself).
+    const Real dx = 0.01, H = 0.5;
+    Particles<2> P;
+    for (int j = -4; j < 50; ++j)
+        for (int i = -4; i < 30; ++i) {
+            const Vec<2> x((i + 0.5) * dx, (j + 0.5) * dx);
+            const bool wall = i < 0 || j < 0;
+            P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<2>::Zero(), kRho,
+                        kRho * dx * dx);
+            P.p.back() = kRho * kG * (H - x[1]);
+        }
+    const AnyKernel<2> kernel = make_kernel<2>(KernelType::wendland_c2, Real(1.5) * dx);
+    for (Real y : {Real(0.1), Real(0.25), Real(0.4)})
+        for (Real d : {Real(0), Real(0.005), Real(0.05)}) {
+            const Real p =
+                wall_pressure_sensor(P, kernel, SensorFace<2>{Vec<2>(0, y), 0, -1, d}, dx / 4);
+            INFO("y = " << y << ", diameter = " << d);
+            CHECK(p == doctest::Approx(kRho * kG * (H - y)).epsilon(0.002));
+        }
+    // On the floor (normal y): a 4 cm sensor averages the uniform floor pressure.
+    CHECK(wall_pressure_sensor(P, kernel, SensorFace<2>{Vec<2>(Real(0.15), 0), 1, -1, Real(0.04)},
+                               dx / 4) == doctest::Approx(kRho * kG * H).epsilon(0.002));
+    // Dry: far above the water.
+    Particles<2> dry;
+    dry.push_back(0, Kind::wall, Vec<2>(-dx / 2, Real(2)), Vec<2>::Zero(), kRho, kRho * dx * dx);
+    CHECK(std::isnan(
+        wall_pressure_sensor(dry, kernel, SensorFace<2>{Vec<2>(0, Real(2)), 0, -1, dx}, dx / 4)));
+}
+
+TEST_CASE("interpolated sensor in 3-D averages over its disc") {
+    const Real dx = 0.02, H = 0.3;
+    Particles<3> P;
+    for (int k = -3; k < 15; ++k)
+        for (int j = -3; j < 10; ++j)
+            for (int i = 0; i < 10; ++i) {
+                const Vec<3> x((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx);
+                const bool wall = j < 0 || k < 0;
+                P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<3>::Zero(), kRho,
+                            kRho * dx * dx * dx);
+                P.p.back() = kRho * kG * (H - x[2]);
+            }
+    const AnyKernel<3> kernel = make_kernel<3>(KernelType::wendland_c2, Real(1.5) * dx);
+    // A sensor on the y = 0 wall, centre at z = 0.15: the disc is symmetric about its centre,
+    // so a linear field averages to the centre's value.
+    const Real p = wall_pressure_sensor(
+        P, kernel, SensorFace<3>{Vec<3>(Real(0.1), 0, Real(0.15)), 1, -1, Real(0.06)}, dx / 4);
+    CHECK(p == doctest::Approx(kRho * kG * (H - Real(0.15))).epsilon(0.003));
+}
