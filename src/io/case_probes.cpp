@@ -22,6 +22,9 @@ const std::vector<std::pair<std::string, ProbeType>> kProbeTypes = {
     {"surge_front", ProbeType::surge_front},
     {"force", ProbeType::force}};
 
+const std::vector<std::pair<std::string, SensorReading>> kSensorReadings = {
+    {"force", SensorReading::force}, {"interpolated", SensorReading::interpolated}};
+
 bool inside_domain(const CaseConfig& c, const Triple& p) {
     const double eps = slack(c);
     for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a)
@@ -131,7 +134,8 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
     const double eps = slack(c);
     double best = std::numeric_limits<double>::infinity();
     // A candidate surface: normal axis, coordinate, and the tangential extent of the wall.
-    const auto consider = [&](std::size_t axis, double at, const Triple& lo, const Triple& hi) {
+    const auto consider = [&](std::size_t axis, double at, int into_wall, const Triple& lo,
+                              const Triple& hi) {
         const double d = std::abs(p.position[axis] - at);
         if (d > c.dx + eps || d >= best)
             return;
@@ -141,6 +145,7 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
         best = d;
         p.sensor_axis = static_cast<int>(axis);
         p.sensor_surface = at;
+        p.sensor_into_wall = into_wall;
     };
     for (const auto& f : c.tank_faces) {
         ProbeWall w;
@@ -149,14 +154,17 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
         if (given && (given->face_axis != w.face_axis || given->face_high != w.face_high))
             continue;
         const auto a = static_cast<std::size_t>(w.face_axis);
-        consider(a, w.face_high ? c.tank_hi[a] : c.tank_lo[a], c.tank_lo, c.tank_hi);
+        // The tank's walls lie outside it: beyond tank_hi, below tank_lo.
+        consider(a, w.face_high ? c.tank_hi[a] : c.tank_lo[a], w.face_high ? 1 : -1, c.tank_lo,
+                 c.tank_hi);
     }
     for (std::size_t b = 0; b < c.boxes.size(); ++b) {
         if (given && given->box != static_cast<int>(b))
             continue;
         for (std::size_t a = 0; a < dim; ++a) {
-            consider(a, c.boxes[b].lo[a], c.boxes[b].lo, c.boxes[b].hi);
-            consider(a, c.boxes[b].hi[a], c.boxes[b].lo, c.boxes[b].hi);
+            // An obstacle's wall lies inside its box: above its lo face, below its hi face.
+            consider(a, c.boxes[b].lo[a], 1, c.boxes[b].lo, c.boxes[b].hi);
+            consider(a, c.boxes[b].hi[a], -1, c.boxes[b].lo, c.boxes[b].hi);
         }
     }
     if (p.sensor_axis < 0)
@@ -212,6 +220,7 @@ void read_probes(const Section& root, CaseConfig& c) {
         only_for("x", p.type == ProbeType::water_level);
         only_for("y", p.type == ProbeType::water_level);
         only_for("diameter", pressure);
+        only_for("reading", pressure);
         only_for("face", pressure || force);
         only_for("box", pressure || force);
         only_for("lo", force);
@@ -232,7 +241,11 @@ void read_probes(const Section& root, CaseConfig& c) {
                     p.diameter <= kMaxCoordinate, "diameter",
                     fmt::format("must be at most {:g} m, got {}", kMaxCoordinate, p.diameter));
                 read_sensor_wall(s, c, p);
+                p.reading = s.choice("reading", SensorReading::force, kSensorReadings);
             } else {
+                s.require(s.node("reading") == nullptr, "reading",
+                          "only an area sensor (with a diameter) has a reading; a point probe "
+                          "interpolates the fluid's pressure");
                 s.require(s.node("face") == nullptr && s.node("box") == nullptr,
                           s.node("face") != nullptr ? "face" : "box",
                           "only an area sensor (with a diameter) sits on a wall");

@@ -126,8 +126,11 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         if (probe.diameter <= 0)
             return {double(pressure_probe(P, sim.kernel(), point))};
         point[probe.sensor_axis] = Real(probe.sensor_surface);
-        return {double(wall_pressure_sensor(P, sim.kernel(), point, probe.sensor_axis,
-                                            Real(probe.diameter), dx / 4))};
+        const SensorFace<D> face{point, probe.sensor_axis, probe.sensor_into_wall,
+                                 Real(probe.diameter)};
+        if (probe.reading == SensorReading::force)
+            return {double(wall_force_sensor(P, sim.kernel(), wall_load_params(sim), face, dx))};
+        return {double(wall_pressure_sensor(P, sim.kernel(), face, dx / 4))};
     }
     case ProbeType::water_level: {
         std::optional<Real> y;

@@ -532,6 +532,7 @@ type = "pressure"
 position = [0.5, 0.0]
 diameter = 0.05
 face = "y-"
+reading = "interpolated"
 interval = 0.01
 )";
     const std::string text = edit("[[probes]]\nname = \"front\"\ntype = \"surge_front\"\n", probes);
@@ -558,8 +559,12 @@ interval = 0.01
     CHECK(sensor.diameter == doctest::Approx(0.02));
     CHECK(sensor.sensor_axis == 0);
     CHECK(sensor.sensor_surface == doctest::Approx(4));
+    CHECK(sensor.sensor_into_wall == 1); // the tank's x+ wall lies beyond x = 4
+    CHECK(sensor.reading == SensorReading::force);
     CHECK(c.probes[5].sensor_axis == 1);
     CHECK(c.probes[5].sensor_surface == doctest::Approx(0));
+    CHECK(c.probes[5].sensor_into_wall == -1); // the floor lies below y = 0
+    CHECK(c.probes[5].reading == SensorReading::interpolated);
     CHECK_FALSE(c.probes[5].every_step);
 
     // Refusals, each naming its key.
@@ -567,6 +572,10 @@ interval = 0.01
         return expect_error(edit(from, to, text), key);
     };
     CHECK(contains(bad("diameter = 0.02", "diameter = 0", "probes[4].diameter"), "> 0"));
+    CHECK(contains(bad("reading = \"interpolated\"", "reading = \"shepard\"", "probes[5].reading"),
+                   "interpolated"));
+    CHECK(contains(bad("diameter = 0.02", "reading = \"force\"", "probes[4].reading"),
+                   "only an area sensor"));
     CHECK(contains(bad("position = [3.99, 0.3]", "position = [3.9, 0.3]", "probes[4].position"),
                    "off every wall"));
     CHECK(contains(bad("lo = [0, 0.5]", "lo = [0, 3.5]", "probes[3].lo"), "touches no wall"));

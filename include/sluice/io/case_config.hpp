@@ -41,6 +41,9 @@ enum class VelocityProfile { uniform, taylor_green, rotating, strain };
 // (ellipsoid in 3-D) inscribed in the box.
 enum class BlockShape { box, ellipse };
 enum class ProbeType { pressure, water_level, surge_front, force };
+// What an area sensor reads: the fluid's normal force on the wall under its face per unit area
+// (wall_force_sensor), or the pressure interpolated on the face (wall_pressure_sensor).
+enum class SensorReading { force, interpolated };
 
 struct FluidBlock {
     Triple lo{}, hi{}; // [m] axis-aligned box filled on a lattice of spacing dx
@@ -95,9 +98,11 @@ struct ProbeConfig {
     double diameter = 0;                // pressure: sensor diameter [m]; 0 = point probe
     int sensor_axis = -1;               // pressure with a diameter: the wall's normal axis
     double sensor_surface = 0;          // ... and the surface's coordinate on it [m]
-    int direction_axis = 0;             // surge front: axis of "+x", "-y", ...
-    bool direction_negative = false;    // ... and its sign
-    double min_thickness = 0;           // surge front [m]; 0 = 2 dx
+    int sensor_into_wall = 0;           // ... and the wall's side along the axis (+1 or -1)
+    SensorReading reading = SensorReading::force; // pressure with a diameter
+    int direction_axis = 0;                       // surge front: axis of "+x", "-y", ...
+    bool direction_negative = false;              // ... and its sign
+    double min_thickness = 0;                     // surge front [m]; 0 = 2 dx
 
     bool operator==(const ProbeConfig&) const = default;
 };
