@@ -21,14 +21,21 @@ import analyse  # noqa: E402
 # m: each panel holds two rows of wall particles at dx = 0.01 m (four at 0.005 m). Valid for
 # dx = 0.01 m / k only: at dx = 0.02 m the strips' edges fall on wall rows.
 PANEL_HEIGHT = 0.02
-PROBES = [("P1 (0.15-0.17 m) panel", "P1_panel"), ("P1 point", "P1"),
-          ("80 mm panel", "y080mm_panel"), ("80 mm point", "y080mm"),
-          ("30 mm panel", "y030mm_panel"), ("30 mm point", "y030mm"),
-          ("0-20 mm panel", "y010mm_panel"), ("3 mm point", "y003mm")]
+PROBES = [("P1 (0.15-0.17 m) panel", "P1_panel"), ("P1 9 mm sensor (force)", "P1_area"),
+          ("P1 9 mm sensor (interp.)", "P1_area_interp"), ("P1 point", "P1"),
+          ("80 mm panel", "y080mm_panel"), ("80 mm sensor (force)", "y080mm_area"),
+          ("80 mm point", "y080mm"),
+          ("30 mm panel", "y030mm_panel"), ("30 mm sensor (force)", "y030mm_area"),
+          ("30 mm point", "y030mm"),
+          ("0-20 mm panel", "y010mm_panel"), ("4.5 mm sensor (force)", "y003mm_area"),
+          ("3 mm point", "y003mm")]
 
 
-def figures(run: Path, probe: str, sc: analyse.Scales) -> dict:
-    d = np.genfromtxt(run / "probes" / f"{probe}.csv", delimiter=",", names=True)
+def figures(run: Path, probe: str, sc: analyse.Scales) -> dict | None:
+    path = run / "probes" / f"{probe}.csv"
+    if not path.exists():  # a run from before the probe was added to the case
+        return None
+    d = np.genfromtxt(path, delimiter=",", names=True)
     p = d["Fx_N"] / PANEL_HEIGHT if probe.endswith("_panel") else d["pressure_Pa"]
     return analyse.impact_metrics(d["time_s"], p, sc)
 
@@ -38,7 +45,13 @@ def main() -> int:
     median = "--median" in sys.argv
     sc = analyse.Scales()  # H = 0.6 m, g = 9.81, rho0 = 1000
     rows = {name: [figures(Path(r), probe, sc) for r in args] for name, probe in PROBES}
+    for exp in analyse.experiment_metrics(0.16, sc):
+        print(f"{exp['label']:40s} filtered peak {exp['peak_filt_star']:.2f} rho g H, "
+              f"impulse {exp['impulse_star']:.3f} rho g H sqrt(H/g)")
     for name, ms in rows.items():
+        if any(m is None for m in ms):
+            print(f"{name:24s} (not in every run)")
+            continue
         if median:
             pk = [m["peak_filt_star"] for m in ms]
             neg = [m["neg_longest_ms"] for m in ms]
@@ -47,9 +60,10 @@ def main() -> int:
                   f"{statistics.median(neg):4.1f} ms (max {max(neg):.1f}); n = {len(ms)}")
         else:
             for r, m in zip(args, ms):
-                print(f"{r:30s} {name:24s} contact t* {m['t_contact_star']:.2f}  peak raw "
-                      f"{m['peak_raw_star']:6.2f}  filtered {m['peak_filt_star']:6.2f}  longest "
-                      f"below -0.5: {m['neg_longest_ms']:4.1f} ms")
+                print(f"{r:30s} {name:26s} contact t* {m['t_contact_star']:.2f}  peak raw "
+                      f"{m['peak_raw_star']:6.2f}  filtered {m['peak_filt_star']:6.2f}  impulse "
+                      f"{m['impulse_star']:6.3f}  longest below -0.5: "
+                      f"{m['neg_longest_ms']:4.1f} ms")
     return 0
 
 
