@@ -76,7 +76,7 @@ TOML
 plot loads_2d probes "$work/loads_2d"
 expect loads_2d '^probe back_wall: force on tank face x- \[N/m\]: Fx Fy; [0-9]+ samples, every step$'
 expect loads_2d '^probe back_wall: moment about \(0, 0\) m \[N m/m\]: Mz$'
-expect loads_2d '^probe back_wall_p: area sensor \(40 mm segment\) on the wall at \(0, 0.1\) m \[Pa\]'
+expect loads_2d '^probe back_wall_p: area sensor \(40 mm segment, wall force\) on the wall at \(0, 0.1\) m \[Pa\]'
 expect loads_2d '^probe p2_right_wall: point probe at \(1.595, 0.02\) m \[Pa\]; [0-9]+ samples, every 0.0002 s$'
 
 "$exe" run "$src/cases/dam_break_3d.toml" --out "$work/loads_3d" --threads 1 --quiet \
@@ -84,7 +84,7 @@ expect loads_2d '^probe p2_right_wall: point probe at \(1.595, 0.02\) m \[Pa\]; 
 plot loads_3d probes "$work/loads_3d"
 expect loads_3d '^probe far_wall_force: force on tank face x\+ \[N\]: Fx Fy Fz;'
 expect loads_3d '^probe far_wall_force: moment about \(0.6, 0.1, 0\) m \[N m\]: Mx My Mz$'
-expect loads_3d '^probe far_wall_p_area: area sensor \(⌀ 40 mm\) on face x\+ at \(0.6, 0.1, 0.03\) m \[Pa\]'
+expect loads_3d '^probe far_wall_p_area: area sensor \(⌀ 40 mm, wall force\) on face x\+ at \(0.6, 0.1, 0.03\) m \[Pa\]'
 expect loads_3d '^probe far_wall_p_point: point probe at \(0.59, 0.1, 0.03\) m \[Pa\]'
 expect loads_3d '^probe level_x040_y005: point gauge at x = 0.4 m, y = 0.05 m \[m\]'
 expect loads_3d '^probe front_bulk: front along \+x, columns ≥ 60 mm deep \[m\]'
