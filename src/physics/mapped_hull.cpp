@@ -88,9 +88,12 @@ MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets, HullPrefilter prefilt
     const Real tol = kMappedHullTolerance * h.size;
     // The images the hull is computed on (all, or those the prefilter keeps) and their
     // indices; `dropped` marks the others, which are neither corners nor boundary points.
-    std::vector<Vec<D>> kept_images;
-    std::vector<int> kept;
-    std::vector<char> dropped(h.images.size(), 0);
+    thread_local std::vector<Vec<D>> kept_images;
+    thread_local std::vector<int> kept;
+    thread_local std::vector<char> dropped;
+    kept_images.clear();
+    kept.clear();
+    dropped.assign(h.images.size(), 0);
     std::span<const Vec<D>> hull_input(h.images);
     if (prefilter == HullPrefilter::inscribed_ball) {
         const Real rho = inscribed_ball_radius<D>(h.images);
