@@ -134,6 +134,7 @@ void merge_repeats(std::vector<int>& polygon) {
 // Collinear turns (P == 0) are deleted: only corners remain.
 std::vector<int> sklansky_scan(std::span<const Vec<2>> p, const std::vector<int>& polygon) {
     std::vector<int> hull;
+    hull.reserve(polygon.size() + 1);
     const auto at = [&](int i) -> const Vec<2>& { return p[static_cast<std::size_t>(i)]; };
     for (std::size_t n = 0; n <= polygon.size(); ++n) {
         const int q = polygon[n % polygon.size()];

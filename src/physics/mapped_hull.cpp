@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 namespace sluice {
@@ -78,13 +79,17 @@ Real inscribed_ball_radius(std::span<const Vec<D>> images) {
 }
 
 template <int D>
-MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets, HullPrefilter prefilter) {
-    MappedHull<D> h;
-    h.images.reserve(offsets.size());
+void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter, MappedHull<D>& h) {
+    h.images.clear();
+    h.vertices.clear();
+    h.boundary.clear();
+    h.facets.clear();
+    Real size2 = 0; // sqrt is monotone: the largest norm is the root of the largest square
     for (const auto& r : offsets) {
         h.images.push_back(inverse_square_map<D>(r));
-        h.size = std::max(h.size, h.images.back().norm());
+        size2 = std::max(size2, h.images.back().squaredNorm());
     }
+    h.size = std::sqrt(size2);
     const Real tol = kMappedHullTolerance * h.size;
     // The images the hull is computed on (all, or those the prefilter keeps) and their
     // indices; `dropped` marks the others, which are neither corners nor boundary points.
@@ -128,7 +133,7 @@ MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets, HullPrefilter prefilt
             h.boundary = quadrant_hull_2d(hull_input, HullPoints::boundary);
             original(h.boundary);
             std::sort(h.boundary.begin(), h.boundary.end());
-            return h;
+            return;
         }
     } else {
         ConvexHull3d v = convex_hull_3d(hull_input, HullPoints::vertices);
@@ -139,7 +144,7 @@ MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets, HullPrefilter prefilt
             std::vector<int> b = convex_hull_3d(hull_input, HullPoints::boundary).points;
             original(b);
             h.boundary = b;
-            return h;
+            return;
         }
     }
     // Points within the tolerance of a facet join the corners. Duplicates of a corner (same
@@ -153,6 +158,12 @@ MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets, HullPrefilter prefilt
                 break;
             }
     }
+}
+
+template <int D>
+MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets, HullPrefilter prefilter) {
+    MappedHull<D> h;
+    mapped_hull_into<D>(offsets, prefilter, h);
     return h;
 }
 
@@ -167,6 +178,8 @@ bool hull_surrounds_origin(const MappedHull<D>& hull) {
 
 template MappedHull<2> mapped_hull<2>(std::span<const Vec<2>>, HullPrefilter);
 template MappedHull<3> mapped_hull<3>(std::span<const Vec<3>>, HullPrefilter);
+template void mapped_hull_into<2>(std::span<const Vec<2>>, HullPrefilter, MappedHull<2>&);
+template void mapped_hull_into<3>(std::span<const Vec<3>>, HullPrefilter, MappedHull<3>&);
 template Real inscribed_ball_radius<2>(std::span<const Vec<2>>);
 template Real inscribed_ball_radius<3>(std::span<const Vec<3>>);
 template bool hull_surrounds_origin<2>(const MappedHull<2>&);

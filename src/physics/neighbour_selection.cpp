@@ -34,7 +34,8 @@ std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support
             r.push_back(offsets[j]);
         }
     }
-    const MappedHull<D> hull = mapped_hull<D>(r);
+    thread_local MappedHull<D> hull; // buffers reused between calls
+    mapped_hull_into<D>(r, HullPrefilter::inscribed_ball, hull);
     for (int k : selection.hull_boundary ? hull.boundary : hull.vertices)
         out.push_back(candidate[static_cast<std::size_t>(k)]);
     if (selection.union_with_radius)

@@ -60,6 +60,10 @@ template <int D>
 [[nodiscard]] MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets,
                                         HullPrefilter prefilter = HullPrefilter::inscribed_ball);
 
+// The same into `out`, whose buffers are reused (a caller that hulls once per particle).
+template <int D>
+void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter, MappedHull<D>& out);
+
 // True when the images surround the origin: it lies inside the hull by more than the
 // tolerance, so the offsets point into every half-space (they positively span R^D).
 template <int D>
