@@ -454,6 +454,11 @@ NeighbourSelection read_neighbour_selection(const Section& s) {
         "candidate_radius_over_dx",
         fmt::format("must be in (0, 10] (lattice spacings), got {}", n.candidate_radius_over_dx));
     n.union_with_radius = s.boolean("union_with_radius").value_or(n.union_with_radius);
+    // The projection scheme's candidates are its neighbours within the operator radius re
+    // (docs/CASE_REFERENCE.md), so hull + radius would be the radius set.
+    s.require(!n.union_with_radius, "union_with_radius",
+              "the candidates are the particles within the operator radius, so the union with "
+              "the radius set is the radius set: use selection = \"radius\"");
     n.hull_boundary = s.choice("hull_points", n.hull_boundary, kHullPoints);
     return n;
 }

@@ -14,8 +14,8 @@ namespace sluice {
 namespace {
 
 // Indices of the distinct points, sorted by (x, y); of equal points the lowest index stays.
-std::vector<int> distinct_sorted(std::span<const Vec<2>> p) {
-    std::vector<int> idx(p.size());
+void distinct_sorted_into(std::span<const Vec<2>> p, std::vector<int>& idx) {
+    idx.resize(p.size());
     std::iota(idx.begin(), idx.end(), 0);
     std::sort(idx.begin(), idx.end(), [&](int a, int b) {
         const auto& pa = p[static_cast<std::size_t>(a)];
@@ -30,6 +30,11 @@ std::vector<int> distinct_sorted(std::span<const Vec<2>> p) {
         return p[static_cast<std::size_t>(a)] == p[static_cast<std::size_t>(b)];
     };
     idx.erase(std::unique(idx.begin(), idx.end(), same), idx.end());
+}
+
+std::vector<int> distinct_sorted(std::span<const Vec<2>> p) {
+    std::vector<int> idx;
+    distinct_sorted_into(p, idx);
     return idx;
 }
 
@@ -84,7 +89,9 @@ void append_region_chain(std::span<const Vec<2>> p, const std::vector<int>& idx,
     const Vec<2>& e0 = p[static_cast<std::size_t>(end)];
     const Vec<2> s = rotated(s0, k);
     const Vec<2> e = rotated(e0, k);
-    std::vector<std::pair<Vec<2>, int>> region;
+    // Reused between calls (the hull runs once per particle and step).
+    thread_local std::vector<std::pair<Vec<2>, int>> region;
+    region.clear();
     for (int i : idx) {
         const Vec<2> q = rotated(p[static_cast<std::size_t>(i)], k);
         if (i != start && q.x() >= s.x() && q.x() < e.x() && q.y() > e.y() && q.y() <= s.y() &&
@@ -127,6 +134,7 @@ void merge_repeats(std::vector<int>& polygon) {
 // Collinear turns (P == 0) are deleted: only corners remain.
 std::vector<int> sklansky_scan(std::span<const Vec<2>> p, const std::vector<int>& polygon) {
     std::vector<int> hull;
+    hull.reserve(polygon.size() + 1);
     const auto at = [&](int i) -> const Vec<2>& { return p[static_cast<std::size_t>(i)]; };
     for (std::size_t n = 0; n <= polygon.size(); ++n) {
         const int q = polygon[n % polygon.size()];
@@ -183,13 +191,15 @@ std::vector<int> add_edge_points(std::span<const Vec<2>> p, const std::vector<in
 } // namespace
 
 std::vector<int> quadrant_hull_2d(std::span<const Vec<2>> points, HullPoints which) {
-    const std::vector<int> idx = distinct_sorted(points);
+    thread_local std::vector<int> idx;
+    distinct_sorted_into(points, idx);
     if (idx.empty())
         return {};
     std::array<int, 4> extreme{};
     for (int k = 0; k < 4; ++k)
         extreme[static_cast<std::size_t>(k)] = extreme_point(points, idx, k);
-    std::vector<int> polygon;
+    thread_local std::vector<int> polygon;
+    polygon.clear();
     for (int k = 0; k < 4; ++k)
         append_region_chain(points, idx, extreme[static_cast<std::size_t>(k)],
                             extreme[static_cast<std::size_t>((k + 1) & 3)], k, polygon);

@@ -38,17 +38,43 @@ std::FILE* quiet_stream() {
     return f;
 }
 
+// One Qhull instance per thread, reused from call to call (issue 22): qh_freeqhull(!qh_ALL)
+// keeps Qhull's short-memory pools, so a call after the first skips their set-up and most of
+// its allocations. Calls in different threads never share it.
+class QhullInstance {
+public:
+    QhullInstance() { qh_zero(&qh_, quiet_stream()); }
+    ~QhullInstance() { release(); }
+    // After a refused input Qhull's state is not trusted again: everything goes, a fresh one
+    // starts.
+    void reset() {
+        release();
+        qh_zero(&qh_, quiet_stream());
+    }
+    QhullInstance(const QhullInstance&) = delete;
+    QhullInstance& operator=(const QhullInstance&) = delete;
+    qhT* get() { return &qh_; }
+
+private:
+    void release() {
+        qh_freeqhull(&qh_, qh_ALL);
+        int still_long = 0;
+        int total_long = 0;
+        qh_memfreeshort(&qh_, &still_long, &total_long);
+    }
+    qhT qh_{};
+};
+
 // Runs Qhull on the distinct points; false when it refuses them.
 bool run_qhull(std::span<const Vec<3>> p, const std::vector<int>& idx, const char* options,
                ConvexHull3d& out) {
-    std::vector<coordT> coords;
-    coords.reserve(3 * idx.size());
+    thread_local std::vector<coordT> coords;
+    coords.clear();
     for (int i : idx)
         for (int a = 0; a < 3; ++a)
             coords.push_back(p[static_cast<std::size_t>(i)][a]);
-    qhT qh_storage;
-    qhT* qh = &qh_storage;
-    qh_zero(qh, quiet_stream());
+    thread_local QhullInstance instance;
+    qhT* qh = instance.get();
     std::array<char, 64> command{};
     std::snprintf(command.data(), command.size(), "qhull %s", options);
     const int exit_code = qh_new_qhull(qh, 3, static_cast<int>(idx.size()), coords.data(), False,
@@ -64,10 +90,10 @@ bool run_qhull(std::span<const Vec<3>> p, const std::vector<int>& idx, const cha
                                     facet->offset);
         }
     }
+    // The hull's memory goes back to the pools, which stay for the next call.
     qh_freeqhull(qh, !qh_ALL);
-    int still_long = 0;
-    int total_long = 0;
-    qh_memfreeshort(qh, &still_long, &total_long);
+    if (exit_code != 0)
+        instance.reset();
     return exit_code == 0;
 }
 

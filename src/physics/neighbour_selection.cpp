@@ -22,8 +22,11 @@ std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support
         return out;
     }
     const Real rc = Real(selection.candidate_radius_over_dx) * dx;
-    std::vector<int> candidate;
-    std::vector<Vec<D>> r;
+    // Reused between calls (once per particle and step).
+    thread_local std::vector<int> candidate;
+    thread_local std::vector<Vec<D>> r;
+    candidate.clear();
+    r.clear();
     for (std::size_t j = 0; j < offsets.size(); ++j) {
         const Real r2 = offsets[j].squaredNorm();
         if (r2 > 0 && r2 <= rc * rc) {
@@ -31,7 +34,8 @@ std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support
             r.push_back(offsets[j]);
         }
     }
-    const MappedHull<D> hull = mapped_hull<D>(r);
+    thread_local MappedHull<D> hull; // buffers reused between calls
+    mapped_hull_into<D>(r, HullPrefilter::inscribed_ball, hull);
     for (int k : selection.hull_boundary ? hull.boundary : hull.vertices)
         out.push_back(candidate[static_cast<std::size_t>(k)]);
     if (selection.union_with_radius)

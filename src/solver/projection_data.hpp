@@ -5,6 +5,7 @@
 // fields they exchange. Private to src/solver.
 #include "sluice/core/particles.hpp"
 #include "sluice/physics/ls_weight.hpp"
+#include "sluice/physics/selected_operators.hpp"
 #include "sluice/solver/halo_fields.hpp"
 #include "sluice/solver/pressure_solve.hpp"
 #include "sluice/tasks/step_graph.hpp"
@@ -26,8 +27,10 @@ struct ProjectionGroup {
     std::vector<Vec<D>> grad;         // WMLS gradient coefficient (fluid rows): divergence in P3
     std::vector<Vec<D>> grad_correct; // correction P7's coefficient (first-order option only)
     std::vector<Real> a;              // coefficient a_ij of the scaled system (every row)
-    std::vector<Vec<D>> scratch_offsets, scratch_linear;
+    std::vector<Vec<D>> scratch_offsets, scratch_linear, scratch_grad;
+    std::vector<Real> scratch_lap;
     std::vector<std::uint32_t> scratch_pairs;
+    physics::SelectedOperatorScratch<D> scratch_ops;
     std::array<double, 6> partial{}; // reduction partials of the last solver run, this group
 };
 
@@ -145,6 +148,7 @@ struct ProjectionData {
     Real surface_diameter = 0;
     Real collision_distance = 0; // wall and fluid-fluid collisions (docs/PROJECTION.md)
     physics::LsWeight weight = physics::LsWeight::pnu_mps;
+    physics::OperatorSelections selections; // [neighbours.<operator>] (all radius by default)
 
     PressureSolveRecord last; // the last step's solve
     PressureSolveTotals totals;

@@ -3,8 +3,8 @@
 // are in include/sluice/physics/projection.hpp, wmls.hpp and drift.hpp.
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/drift.hpp"
-#include "sluice/physics/free_surface.hpp"
 #include "sluice/physics/projection.hpp"
+#include "sluice/physics/selected_operators.hpp"
 #include "sluice/physics/wmls.hpp"
 #include "sluice/solver/simulation.hpp"
 
@@ -51,6 +51,8 @@ void Simulation<D>::init_projection() {
     d.re = Real(kernel_support_factor(cfg_.kernel) * h_);
     d.surface_diameter = Real(cfg_.projection.surface_diameter_over_dx * cfg_.dx);
     d.collision_distance = Real(physics::wall_collision_distance_over_dx * cfg_.dx);
+    d.selections = {cfg_.neighbours.gradient, cfg_.neighbours.laplacian,
+                    cfg_.neighbours.free_surface};
     const std::vector<Vec<D>> lattice = lattice_offsets<D>(Real(cfg_.dx), d.re);
     for (const Vec<D>& o : lattice)
         d.n0 += physics::ls_weight(o.norm(), d.re, d.weight);
@@ -203,35 +205,43 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                             physics::fluid_collision_restitution);
                 }
                 d.number_density[i] = n;
+                // The WMLS fits and the surface test, each over its operator's neighbours
+                // ([neighbours.<operator>]; all of them with radius selection).
                 const std::span<const Vec<D>> offsets(G.scratch_offsets);
-                const auto st = physics::wmls_stencil<D>(offsets, re, weight);
+                const std::size_t count = offsets.size();
+                const bool first_order =
+                    cfg_.projection.correction_gradient == CorrectionGradient::first_order;
+                G.scratch_grad.resize(count);
+                G.scratch_lap.resize(count);
+                G.scratch_linear.resize(first_order ? count : 0);
+                const auto ops = physics::selected_operators<D>(
+                    offsets, d.selections, re, Real(cfg_.dx), weight, d.surface_diameter,
+                    std::span<Vec<D>>(G.scratch_grad), std::span<Real>(G.scratch_lap),
+                    std::span<Vec<D>>(G.scratch_linear), G.scratch_ops);
                 Vec<D> lap_u = Vec<D>::Zero();
-                for (std::size_t m = 0; m < G.scratch_pairs.size(); ++m) {
+                for (std::size_t m = 0; m < count; ++m) {
                     const std::uint32_t p = G.scratch_pairs[m];
-                    G.lap[p] = st.laplacian(0, static_cast<Eigen::Index>(m));
-                    G.grad[p] = st.gradient.col(static_cast<Eigen::Index>(m));
+                    G.lap[p] = G.scratch_lap[m];
+                    G.grad[p] = G.scratch_grad[m];
                     lap_u += G.lap[p] * (P_.v[list.j[p]] - P_.v[i]);
                 }
-                if (cfg_.projection.correction_gradient == CorrectionGradient::first_order) {
+                if (first_order) {
                     // P7's gradient from the first-order fit; where that is singular too,
                     // the second-order coefficients stay.
                     for (std::uint32_t p = b; p < e; ++p)
                         G.grad_correct[p] = G.grad[p];
-                    G.scratch_linear.resize(G.scratch_pairs.size());
-                    if (physics::wmls_linear_gradient<D>(offsets, re, weight,
-                                                         std::span<Vec<D>>(G.scratch_linear)))
-                        for (std::size_t m = 0; m < G.scratch_pairs.size(); ++m)
+                    if (ops.linear_ok)
+                        for (std::size_t m = 0; m < count; ++m)
                             G.grad_correct[G.scratch_pairs[m]] = G.scratch_linear[m];
                 }
-                const bool surface =
-                    !st.ok || physics::is_free_surface<D>(offsets, d.surface_diameter) ||
-                    physics::below_surface_density(n, d.n0,
-                                                   Real(cfg_.projection.surface_density_ratio));
+                const bool surface = !ops.ok || ops.free_surface ||
+                                     physics::below_surface_density(
+                                         n, d.n0, Real(cfg_.projection.surface_density_ratio));
                 d.row[i] = surface ? PpeRow::surface : PpeRow::fluid;
                 // A stencil that cannot fit second derivatives gives no viscous term.
-                d.u_star[i] = physics::predicted_velocity<D>(v_i, st.ok ? lap_u : Vec<D>::Zero(),
-                                                             Real(cfg_.viscosity / cfg_.rho0),
-                                                             momentum_.gravity, Real(dt_));
+                d.u_star[i] = physics::predicted_velocity<D>(
+                    v_i, ops.laplacian_ok ? lap_u : Vec<D>::Zero(),
+                    Real(cfg_.viscosity / cfg_.rho0), momentum_.gravity, Real(dt_));
                 continue;
             }
             // Stage 1.

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <unistd.h>
 
@@ -382,17 +383,21 @@ TEST_CASE("overrides") {
 }
 
 TEST_CASE("neighbour selection per operator: default radius, convex-hull keys validated") {
-    const std::string path = write_case("nb_default", kValid2D);
+    // The tables apply to the projection scheme (its WMLS operators and surface test).
+    std::ifstream in(std::string(SLUICE_SOURCE_DIR) + "/cases/projection_hydrostatic_2d.toml");
+    const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    REQUIRE(!base.empty());
+    const std::string path = write_case("nb_default", base);
     const CaseConfig d = read_case(path);
     CHECK(d.neighbours.gradient.policy == NeighbourPolicy::radius);
     CHECK(d.neighbours.laplacian.policy == NeighbourPolicy::radius);
     CHECK(d.neighbours.free_surface.policy == NeighbourPolicy::radius);
 
-    const std::string hull = kValid2D + R"(
+    const std::string hull = base + R"(
 [neighbours.gradient]
 selection = "convex-hull"
 candidate_radius_over_dx = 2.5
-union_with_radius = true
+union_with_radius = false
 hull_points = "vertices"
 
 [neighbours.free_surface]
@@ -401,7 +406,7 @@ selection = "convex-hull"
     const CaseConfig c = read_case(write_case("nb_hull", hull));
     CHECK(c.neighbours.gradient.policy == NeighbourPolicy::convex_hull);
     CHECK(c.neighbours.gradient.candidate_radius_over_dx == 2.5);
-    CHECK(c.neighbours.gradient.union_with_radius);
+    CHECK_FALSE(c.neighbours.gradient.union_with_radius);
     CHECK_FALSE(c.neighbours.gradient.hull_boundary);
     CHECK(c.neighbours.laplacian.policy == NeighbourPolicy::radius);
     CHECK(c.neighbours.free_surface.policy == NeighbourPolicy::convex_hull);
@@ -415,12 +420,16 @@ selection = "convex-hull"
     CHECK(o.neighbours.laplacian.candidate_radius_over_dx == 4);
 
     const auto bad = [&](const std::string& table, const std::string& key) {
-        return expect_error(kValid2D + "\n[neighbours.gradient]\n" + table, key);
+        return expect_error(base + "\n[neighbours.gradient]\n" + table, key);
     };
     CHECK(contains(bad("selection = \"nearest\"", "neighbours.gradient.selection"), "convex-hull"));
     CHECK(contains(bad("selection = \"radius\"\nunion_with_radius = true",
                        "neighbours.gradient.union_with_radius"),
                    "applies only"));
+    // The candidates are the particles within the operator radius: the union is the radius set.
+    CHECK(contains(bad("selection = \"convex-hull\"\nunion_with_radius = true",
+                       "neighbours.gradient.union_with_radius"),
+                   "selection = \"radius\""));
     bad("selection = \"convex-hull\"\ncandidate_radius_over_dx = 0",
         "neighbours.gradient.candidate_radius_over_dx");
     bad("selection = \"convex-hull\"\ncandidate_radius_over_dx = 11",
@@ -429,8 +438,12 @@ selection = "convex-hull"
     bad("selection = \"convex-hull\"\nunion_with_radius = 1",
         "neighbours.gradient.union_with_radius");
     bad("selection = \"convex-hull\"\nradius = 2", "neighbours.gradient.radius");
-    expect_error(kValid2D + "\n[neighbours.divergence]\nselection = \"radius\"\n",
+    expect_error(base + "\n[neighbours.divergence]\nselection = \"radius\"\n",
                  "neighbours.divergence");
+    // WCSPH has no operator that takes a neighbour set: the tables are refused.
+    CHECK(contains(expect_error(kValid2D + "\n[neighbours.gradient]\nselection = \"radius\"\n",
+                                "neighbours.gradient.selection"),
+                   "applies only to numerics.scheme = \"projection\""));
 }
 
 TEST_CASE("block shapes and the rotating and strain profiles") {

@@ -1,7 +1,8 @@
 #pragma once
 // Convex hull of a small 3-D point set (the inverse-square images of a particle's candidate
 // neighbours in 3-D), computed with Qhull's reentrant library (libqhull_r, Barber, Dobkin &
-// Huhdanpaa 1996), one independent qhT per call so that calls in different threads are safe.
+// Huhdanpaa 1996), one qhT per thread, reused from call to call (its memory pools stay set up),
+// so that calls in different threads are safe.
 //
 // Degenerate sets never reach Qhull (which stops on them): points with identical coordinates
 // count once (lowest index), and the affine dimension of the set is found first (singular

@@ -34,9 +34,35 @@ struct MappedHull {
 // below it is round-off of the offsets (x_j - x_i of lattice positions), not geometry.
 inline constexpr Real kMappedHullTolerance = Real(1e-9);
 
+// Whether mapped_hull first drops the images that lie deep inside the hull (issue 22).
+//
+// Akl & Toussaint's (1978) elimination, in the form the inverse-square map invites: the
+// extreme images along the 2 D coordinate half-axes span a closed polygon (2-D: 4 edges) or
+// octahedron-like surface (3-D: 8 triangles, one per octant). When every edge/triangle of it
+// is seen from the origin with the orientation of the regular one, the surface is star-shaped
+// about the origin, so the ball about the origin of radius rho = the smallest distance from
+// the origin to the planes of its edges/triangles lies inside their hull, hence inside the
+// images' hull. An image with |r'| < (1 - 1e-2) rho is then farther than 1e-2 rho from every
+// facet of the hull: neither a corner nor within the boundary tolerance of a facet, and it
+// is dropped before the hull is computed (|r'| = 1 / |r|: the far candidates). The hull of
+// the rest has the same corners and facets, so `vertices` and `boundary` are unchanged
+// (tests/unit/test_neighbour_selection.cpp compares both forms on lattices and deformed
+// sets). `none` computes the hull of every image (the reference for that test).
+enum class HullPrefilter { inscribed_ball, none };
+
+// The radius rho above for these images (0 when the surface is not star-shaped about the
+// origin or some half-axis has no image).
+template <int D>
+[[nodiscard]] Real inscribed_ball_radius(std::span<const Vec<D>> images);
+
 // Hull of the images of `offsets` (none may be zero: the mapping is singular there).
 template <int D>
-[[nodiscard]] MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets);
+[[nodiscard]] MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets,
+                                        HullPrefilter prefilter = HullPrefilter::inscribed_ball);
+
+// The same into `out`, whose buffers are reused (a caller that hulls once per particle).
+template <int D>
+void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter, MappedHull<D>& out);
 
 // True when the images surround the origin: it lies inside the hull by more than the
 // tolerance, so the offsets point into every half-space (they positively span R^D).
