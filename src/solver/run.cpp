@@ -75,7 +75,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     so.log_rebalances = !opts.quiet;
     so.debug_fail_rank = opts.debug_fail_rank;
     so.debug_fail_step = opts.debug_fail_step;
-    // A restart: every rank reads the whole checkpoint (and keeps its part of the particles).
+    // A restart: every rank reads the checkpoint's header and an even share of its particles
+    // (collective); the Simulation sends the shares to the ranks that own them.
     const bool resumed = !opts.restart_dir.empty();
     std::optional<Checkpoint<D>> resume;
     if (resumed) {
@@ -112,13 +113,16 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         if (!resumed)
             fs::remove(checkpoint_file); // an earlier run's: its snapshots are going
         discard_partial_checkpoint(checkpoint_file);
+    }
+    // Every rank writes its slice of each snapshot (rank 0 alone touches the folder).
+    if (cfg.snapshots) {
         std::vector<typename SnapshotWriter<D>::Earlier> earlier;
         for (std::size_t k = 0; k < start.snapshot_time.size(); ++k)
             earlier.push_back({start.snapshot_time[k], start.snapshot_particles[k]});
-        if (cfg.snapshots)
-            snapshots = resumed
-                            ? std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields, earlier)
+        snapshots = resumed ? std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields, earlier)
                             : std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
+    }
+    if (root) {
         probe_files =
             resumed ? std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes, start.probe_bytes)
                     : std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes, D);
@@ -128,8 +132,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     if (resumed)
         schedule.resume(start, sim.time());
     // Every rank takes the same decisions (same time). The probes are evaluated where the
-    // particles are (probe_sampling.hpp); the particles are gathered on rank 0 only for a
-    // snapshot.
+    // particles are (probe_sampling.hpp); each rank writes its own particles into a snapshot.
     auto sample = [&](bool force) {
         const double t = sim.time();
         const OutputSchedule::Due due = schedule.due(t, force);
@@ -140,10 +143,9 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                     probe_files->write(due.probes[n], t, rows[n]);
         }
         if (due.snapshot) {
-            const Particles<D> all = sim.gather_particles();
+            const std::string file = snapshots->write(sim.particles(), sim.owned(), t, sim.steps());
             if (root)
-                log.debug("snapshot {} at t = {:.6g} s (step {})",
-                          snapshots->write(all, t, sim.steps()), t, sim.steps());
+                log.debug("snapshot {} at t = {:.6g} s (step {})", file, t, sim.steps());
         }
         schedule.done(due, t);
     };
@@ -175,12 +177,13 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         return std::chrono::duration<double>(Clock::now() - t0).count();
     };
 
-    // Collective: every rank's particles to rank 0, which writes the checkpoint.
+    // Collective: every rank writes its particles; the rest is rank 0's.
     auto write_checkpoint_now = [&] {
-        Checkpoint<D> c;
-        c.particles = sim.gather_particles();
-        if (!root)
+        CheckpointHeader c;
+        if (!root) {
+            write_checkpoint<D>(checkpoint_file, c, sim.particles(), sim.owned());
             return;
+        }
         c.case_fingerprint = cfg.fingerprint;
         c.ranks = sim.comm().size();
         c.solver = sim.solver_state();
@@ -194,16 +197,16 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                 c.output.snapshot_time.push_back(w.time);
                 c.output.snapshot_particles.push_back(w.particles);
             }
-        write_checkpoint(checkpoint_file, c);
+        write_checkpoint<D>(checkpoint_file, c, sim.particles(), sim.owned());
     };
-    // After a failed step every rank holds the state before it: write it for inspection.
+    // After a failed step every rank holds the state before it: write it for inspection
+    // (collective: every rank gets the error from the same step).
     auto last_snapshot = [&](const std::string& label) {
-        const Particles<D> all = sim.gather_particles();
-        if (!root)
-            return std::string();
         if (!snapshots) // snapshots are off: this one is written all the same
             snapshots = std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
-        return fmt::format(", {} in {}", label, snapshots->write(all, sim.time(), sim.steps()));
+        const std::string file =
+            snapshots->write(sim.particles(), sim.owned(), sim.time(), sim.steps());
+        return root ? fmt::format(", {} in {}", label, file) : std::string();
     };
 
     Progress progress(cfg.end_time, opts.quiet || !root, opts.verbose);
