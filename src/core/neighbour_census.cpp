@@ -4,18 +4,27 @@
 #include "sluice/core/rebin.hpp"
 
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace sluice {
 
 template <int D>
 NeighbourCensus count_neighbours(const CellGrid<D>& grid, Particles<D> P, Real support) {
+    return count_neighbours<D>(grid, std::move(P), support, [](MortonKey) { return true; });
+}
+
+template <int D>
+NeighbourCensus count_neighbours(const CellGrid<D>& grid, Particles<D> P, Real support,
+                                 const std::function<bool(MortonKey)>& counted) {
     CellRanges ranges;
     std::vector<CellOccupancy> occupied;
     rebin(grid, P, ranges, occupied);
     const Neighbourhood<D> nb{&grid, &ranges, std::span<const Vec<D>>(P.x), support};
     NeighbourCensus n;
     for (const CellOccupancy& o : occupied) {
+        if (!counted(o.key))
+            continue;
         const AdjacentCells<D> adj = nb.adjacent(o.cell);
         for (std::uint32_t i = nb.begin(o.cell); i < nb.end(o.cell); ++i) {
             const bool i_fluid = P.kind[i] == Kind::fluid;
@@ -34,5 +43,9 @@ NeighbourCensus count_neighbours(const CellGrid<D>& grid, Particles<D> P, Real s
 
 template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, Particles<2>, Real);
 template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, Particles<3>, Real);
+template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, Particles<2>, Real,
+                                             const std::function<bool(MortonKey)>&);
+template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, Particles<3>, Real,
+                                             const std::function<bool(MortonKey)>&);
 
 } // namespace sluice

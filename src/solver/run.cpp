@@ -13,8 +13,10 @@
 #include "sluice/solver/output_schedule.hpp"
 #include "sluice/solver/simulation.hpp"
 
+#include "memory_use.hpp"
 #include "probe_sampling.hpp"
 #include "run_report.hpp"
+#include "run_totals.hpp"
 #include "stop_signals.hpp"
 
 #include <tbb/global_control.h>
@@ -103,6 +105,12 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
              "results in {}",
              cfg.name, cfg.source_file, sim.comm().rank(), sim.comm().size(), threads, sim.owned(),
              opts.out_dir);
+    // Peak resident memory of this rank at three points (perf/memory reads these lines).
+    const auto log_memory = [&log](const char* when) {
+        log.file_only(fmt::format("memory: peak resident {:.1f} MiB {}",
+                                  static_cast<double>(peak_resident_bytes()) / (1 << 20), when));
+    };
+    log_memory("after the initial state");
 
     std::unique_ptr<SnapshotWriter<D>> snapshots;
     std::unique_ptr<ProbeWriter> probe_files;
@@ -151,24 +159,17 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     };
 
     RunResult result;
-    // Neighbour pairs by kind at the start and the end (rank 0, outside the timed loop): the
-    // benchmarks turn them into achieved interactions per second per stage.
+    // Neighbour pairs by kind at the start and the end (outside the timed loop, without a
+    // gather: run_totals.hpp): the benchmarks turn them into achieved interactions per second
+    // per stage.
     const Real support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
-    NeighbourCensus census_start;
-    {
-        const Particles<D> all = sim.gather_particles();
-        result.particles = all.size();
-        result.fluid_particles = all.count(Kind::fluid);
-        result.mass_initial = all.total_mass();
-        if (root)
-            census_start = count_neighbours<D>(sim.grid(), all, support);
-    }
-    std::uint64_t total_particles = result.particles;
-    {
-        // Rank 0 knows the count; the others need it for the progress rate.
-        const std::string s = sim.comm().broadcast(std::to_string(total_particles), 0);
-        total_particles = std::stoull(s);
-    }
+    const RunTotals at_start = run_totals<D>(sim, support);
+    result.particles = at_start.particles;
+    result.fluid_particles = at_start.fluid;
+    result.mass_initial = at_start.mass;
+    const NeighbourCensus census_start = at_start.census;
+    log_memory("after start-up");
+    const std::uint64_t total_particles = result.particles;
 
     // Wall time of this segment's time loop so far; earlier segments' is start.wall_seconds
     // (from the checkpoint), so summary.json can report the whole run's.
@@ -294,13 +295,11 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.particle_steps_per_second = static_cast<double>(total_particles) *
                                        static_cast<double>(result.steps - start_step) /
                                        result.wall_seconds;
-    NeighbourCensus census_end;
-    {
-        const Particles<D> all = sim.gather_particles();
-        result.mass_final = all.total_mass();
-        if (root)
-            census_end = count_neighbours<D>(sim.grid(), all, support);
-    }
+    log_memory("after the time loop");
+    const RunTotals at_end = run_totals<D>(sim, support);
+    result.mass_final = at_end.mass;
+    const NeighbourCensus census_end = at_end.census;
+    log_memory("at the end");
     if (!opts.trace_path.empty())
         sim.write_trace(opts.trace_path);
     if (const PressureSolveTotals* pt = sim.pressure_solve_totals(); pt && pt->solves > 0)

@@ -5,6 +5,9 @@
 #    byte-identical snapshots and .xmf (cmp), and checkpoints whose every dataset and every
 #    attribute but `ranks` and `wall_seconds` (the writer's layout and wall clock) are
 #    identical (h5diff, h5dump);
+#  - the run's totals in summary.json (particle counts, fluid mass, the neighbour census at
+#    the start and the end), which no rank gathers any more, are the same on 1, 2 and 3 ranks,
+#    also on a periodic case (Poiseuille flow);
 #  - the 3-rank run's last checkpoint, continued on 2 ranks (each rank reads an even share and
 #    sends it to its owners), rewrites the snapshots after the checkpoint (every field,
 #    acceleration and mass included) byte-identical to the uninterrupted runs'.
@@ -47,6 +50,20 @@ same_checkpoint() { # a.h5 b.h5 label
     [ $failures -eq "$before" ] && echo "ok $label"
 }
 
+totals() { # summary.json: the layout-independent totals, one line
+    /usr/bin/python3 -c 'import json, sys
+j = json.load(open(sys.argv[1]))
+print([j[k] for k in ("particles", "fluid_particles", "mass_initial", "mass_final")],
+      j["extra"]["neighbours"])' "$1"
+}
+
+same_totals() { # a.json b.json label
+    local a b
+    a=$(totals "$1") b=$(totals "$2")
+    [[ -n $a && $a == "$b" ]] || fail "$3: summary totals differ: $a / $b"
+    [[ $a == *fluid_fluid* ]] || fail "$3: no census in $a"
+}
+
 same_snapshots() { # dir label
     local dir=$1 label=$2 n=0 before=$failures
     for f in "$work/r1"/snapshots/*.h5; do
@@ -69,6 +86,16 @@ for r in 2 3; do
     same_checkpoint "$work/r1/checkpoint.h5" "$work/r$r/checkpoint.h5" \
         "$r ranks: checkpoint datasets and attributes identical to 1 rank's"
 done
+for r in 2 3; do
+    same_totals "$work/r1/summary.json" "$work/r$r/summary.json" "$r ranks"
+done
+"$exe" run "$src/cases/poiseuille_2d.toml" --out "$work/p1" --set time.end_time=0.01 -q ||
+    fail "Poiseuille on 1 rank: exit $?"
+"$mpiexec" --oversubscribe -np 3 "$exe" run "$src/cases/poiseuille_2d.toml" --out "$work/p3" \
+    --set time.end_time=0.01 -q || fail "Poiseuille on 3 ranks: exit $?"
+same_totals "$work/p1/summary.json" "$work/p3/summary.json" "Poiseuille (periodic), 3 ranks"
+[ $failures -eq 0 ] && echo "ok summary totals and neighbour census identical on 1, 2, 3 ranks"
+
 # The writer's layout is recorded, and is the only other difference.
 h5dump -a /ranks "$work/r3/checkpoint.h5" | grep -q "(0): 3" || fail "ranks attribute is not 3"
 

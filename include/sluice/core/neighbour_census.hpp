@@ -6,6 +6,7 @@
 #include "sluice/core/particles.hpp"
 
 #include <cstdint>
+#include <functional>
 
 namespace sluice {
 
@@ -20,7 +21,18 @@ struct NeighbourCensus {
 template <int D>
 NeighbourCensus count_neighbours(const CellGrid<D>& grid, Particles<D> P, Real support);
 
+// The same, but only particles i in cells whose Morton key `counted` accepts are counted (with
+// their neighbours j among all of P): over a partition of the cells the counts add up to the
+// whole set's, each part seeing every particle of the cells adjacent to its own.
+template <int D>
+NeighbourCensus count_neighbours(const CellGrid<D>& grid, Particles<D> P, Real support,
+                                 const std::function<bool(MortonKey)>& counted);
+
 extern template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, Particles<2>, Real);
 extern template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, Particles<3>, Real);
+extern template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, Particles<2>, Real,
+                                                    const std::function<bool(MortonKey)>&);
+extern template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, Particles<3>, Real,
+                                                    const std::function<bool(MortonKey)>&);
 
 } // namespace sluice
