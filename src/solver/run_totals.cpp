@@ -30,18 +30,6 @@ void set_counters(RunTotals& t, const std::array<std::uint64_t, kCounters>& v) {
     c.wall_wall = v[7];
 }
 
-// Appends the particles (id, kind, position) packed in `b` to P.
-template <int D>
-void unpack_positions(const tasks::Bytes& b, Particles<D>& P) {
-    std::size_t pos = 0;
-    while (pos < b.size()) {
-        const auto id = tasks::take<ParticleId>(b, pos);
-        const auto kind = tasks::take<Kind>(b, pos);
-        const auto x = tasks::take<Vec<D>>(b, pos);
-        P.push_back(id, kind, x, Vec<D>::Zero(), 0, 0);
-    }
-}
-
 } // namespace
 
 template <int D>
@@ -58,16 +46,11 @@ RunTotals run_totals(const Simulation<D>& sim, Real support) {
             masses.emplace_back(P.id[i], P.mass[i]);
     t.fluid = masses.size();
 
-    Particles<D> local;
-    local.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        local.id[i] = P.id[i];
-        local.kind[i] = P.kind[i];
-        local.x[i] = P.x[i];
-    }
     if (!comm.parallel()) {
         t.mass = sum_in_id_order(std::move(masses));
-        t.census = count_neighbours<D>(grid, std::move(local), support);
+        t.census = count_neighbours<D>(grid, std::span<const Vec<D>>(P.x.data(), n),
+                                       std::span<const Kind>(P.kind.data(), n), support,
+                                       [](MortonKey) { return true; });
         return t;
     }
 
@@ -111,17 +94,23 @@ RunTotals run_totals(const Simulation<D>& sim, Real support) {
         }
         for (const int r : targets) {
             tasks::Bytes& b = out[static_cast<std::size_t>(r)];
-            tasks::put(b, P.id[i]);
             tasks::put(b, P.kind[i]);
             tasks::put(b, P.x[i]);
         }
     }
     comm.all_to_all(out, in);
     out = {};
-    for (const auto& b : in)
-        unpack_positions<D>(b, local);
+    std::vector<Vec<D>> x(P.x.begin(), P.x.begin() + static_cast<std::ptrdiff_t>(n));
+    std::vector<Kind> kind(P.kind.begin(), P.kind.begin() + static_cast<std::ptrdiff_t>(n));
+    for (const auto& b : in) {
+        std::size_t pos = 0;
+        while (pos < b.size()) {
+            kind.push_back(tasks::take<Kind>(b, pos));
+            x.push_back(tasks::take<Vec<D>>(b, pos));
+        }
+    }
     in = {};
-    t.census = count_neighbours<D>(grid, std::move(local), support,
+    t.census = count_neighbours<D>(grid, x, kind, support,
                                    [&](MortonKey key) { return layout.rank_of(key) == me; });
 
     // Every rank's counts, added (integers: exact in any order).

@@ -1,6 +1,7 @@
 // The parts of Simulation<D> that share particles between ranks: the initial distribution,
 // the halo plan of a rebuild, migration to neighbouring ranks, the balancer (its window of busy
-// times and the rebalance, at a rebuild or between rebuilds) and the gather to rank 0 for output.
+// times and the rebalance, at a rebuild or between rebuilds), the distribution of a checkpoint's
+// shares at a restart, and the gather to rank 0 that tests use.
 // Pure data movement and bookkeeping; the step itself is in simulation.cpp.
 #include "sluice/solver/simulation.hpp"
 

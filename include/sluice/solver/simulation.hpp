@@ -109,7 +109,8 @@ public:
     [[nodiscard]] Particles<D>& particles() { return P_; }
     [[nodiscard]] std::size_t owned() const { return owned_; }
     // Every rank's particles, in (cell key, id) order, on rank 0 (empty elsewhere; on one rank
-    // a copy of particles()). Collective.
+    // a copy of particles()). Collective. For tests: a run never gathers (output is written by
+    // every rank, src/io/h5_parallel.hpp; totals in src/solver/run_totals.hpp).
     [[nodiscard]] Particles<D> gather_particles() const;
     [[nodiscard]] const tasks::Comm& comm() const { return comm_; }
     [[nodiscard]] const tasks::RankLayout& rank_layout() const { return layout_; }
