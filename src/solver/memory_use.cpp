@@ -1,4 +1,4 @@
-// VmHWM from /proc/self/status (memory_use.hpp).
+// VmRSS and VmHWM from /proc/self/status (memory_use.hpp).
 #include "memory_use.hpp"
 
 #include <fstream>
@@ -7,18 +7,23 @@
 
 namespace sluice {
 
-std::uint64_t peak_resident_bytes() {
+ResidentMemory resident_memory() {
+    ResidentMemory m;
     std::ifstream status("/proc/self/status");
     std::string line;
+    const auto kib = [](const std::string& rest) {
+        std::istringstream in(rest);
+        std::uint64_t v = 0;
+        in >> v; // "VmHWM:   123456 kB"
+        return v * 1024;
+    };
     while (std::getline(status, line)) {
-        if (!line.starts_with("VmHWM:"))
-            continue;
-        std::istringstream in(line.substr(6));
-        std::uint64_t kib = 0;
-        in >> kib; // "VmHWM:   123456 kB"
-        return kib * 1024;
+        if (line.starts_with("VmHWM:"))
+            m.peak = kib(line.substr(6));
+        else if (line.starts_with("VmRSS:"))
+            m.now = kib(line.substr(6));
     }
-    return 0;
+    return m;
 }
 
 } // namespace sluice

@@ -107,8 +107,10 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
              opts.out_dir);
     // Peak resident memory of this rank at three points (perf/memory reads these lines).
     const auto log_memory = [&log](const char* when) {
-        log.file_only(fmt::format("memory: peak resident {:.1f} MiB {}",
-                                  static_cast<double>(peak_resident_bytes()) / (1 << 20), when));
+        const ResidentMemory m = resident_memory();
+        log.file_only(fmt::format("memory: peak resident {:.1f} MiB {} (resident now {:.1f} MiB)",
+                                  static_cast<double>(m.peak) / (1 << 20), when,
+                                  static_cast<double>(m.now) / (1 << 20)));
     };
     log_memory("after the initial state");
 
