@@ -1,6 +1,9 @@
 #include "sluice/core/particles.hpp"
 
+#include "sluice/core/id_order_sum.hpp"
+
 #include <algorithm>
+#include <utility>
 
 namespace sluice {
 
@@ -44,10 +47,14 @@ Real Particles<D>::total_mass() const {
     for (std::size_t i = 0; i < size(); ++i)
         if (kind[i] == Kind::fluid)
             m.emplace_back(id[i], mass[i]);
-    std::sort(m.begin(), m.end());
+    return sum_in_id_order(std::move(m));
+}
+
+Real sum_in_id_order(std::vector<std::pair<ParticleId, Real>> values) {
+    std::sort(values.begin(), values.end());
     Real s = 0;
-    for (const auto& [pid, mi] : m)
-        s += mi;
+    for (const auto& [pid, v] : values)
+        s += v;
     return s;
 }
 

@@ -4,7 +4,7 @@
 #include "sluice/io/errors.hpp"
 #include "sluice/version.hpp"
 
-#include "hdf5_util.hpp"
+#include "h5_parallel.hpp"
 
 #include <fmt/format.h>
 
@@ -17,7 +17,9 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace sluice {
 namespace fs = std::filesystem;
@@ -46,27 +48,73 @@ void write_string_attribute(hid_t obj, const char* name, const std::string& valu
     check(H5Awrite(attr.get(), type.get(), padded.data()), std::string("write attribute ") + name);
 }
 
-// n rows of `cols` values; chunked with a Fletcher-32 checksum when not empty.
+// The header travels from rank 0 to every rank as bytes (every rank must write the same
+// attributes; wall_seconds, probe_bytes and the snapshot list are rank 0's).
 template <class T>
-void write_column(hid_t file, const char* name, const std::vector<T>& data, std::size_t cols,
-                  hid_t mem_type, hid_t file_type) {
-    const std::size_t n = cols > 0 ? data.size() / cols : 0;
-    const std::array<hsize_t, 2> dims{n, cols};
-    const int rank = cols == 1 ? 1 : 2;
-    const Handle space(H5Screate_simple(rank, dims.data(), nullptr), H5Sclose,
-                       std::string("create the dataspace of ") + name);
-    const Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "create dataset properties");
-    if (n > 0) {
-        const std::array<hsize_t, 2> chunk{std::min<hsize_t>(n, 65536), cols};
-        check(H5Pset_chunk(dcpl.get(), rank, chunk.data()), "set a chunk size");
-        check(H5Pset_fletcher32(dcpl.get()), "switch on checksums");
+void put(std::string& b, const T& v) {
+    b.append(reinterpret_cast<const char*>(&v), sizeof(T));
+}
+template <class T>
+void put_vector(std::string& b, const std::vector<T>& v) {
+    put(b, static_cast<std::uint64_t>(v.size()));
+    b.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+template <class T>
+T take(const std::string& b, std::size_t& pos) {
+    T v{};
+    std::memcpy(&v, b.data() + pos, sizeof(T));
+    pos += sizeof(T);
+    return v;
+}
+template <class T>
+std::vector<T> take_vector(const std::string& b, std::size_t& pos) {
+    std::vector<T> v(take<std::uint64_t>(b, pos));
+    std::memcpy(v.data(), b.data() + pos, v.size() * sizeof(T));
+    pos += v.size() * sizeof(T);
+    return v;
+}
+
+CheckpointHeader rank0_header(const h5::World& w, const CheckpointHeader& h) {
+    if (!w.parallel())
+        return h;
+    std::string b;
+    if (w.rank == 0) {
+        put_vector(b, std::vector<char>(h.case_fingerprint.begin(), h.case_fingerprint.end()));
+        put(b, h.ranks);
+        put(b, h.solver);
+        const OutputState& o = h.output;
+        put(b, o.out_next);
+        put(b, o.last_output_time);
+        put(b, o.wall_seconds);
+        put_vector(b, o.probe_next);
+        put_vector(b, o.probe_bytes);
+        put_vector(b, o.snapshot_time);
+        put_vector(b, o.snapshot_particles);
     }
-    const Handle set(
-        H5Dcreate2(file, name, file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
-        H5Dclose, std::string("create dataset ") + name);
-    if (n > 0)
-        check(H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
-              std::string("write dataset ") + name);
+    b = h5::broadcast(w, b);
+    CheckpointHeader out;
+    std::size_t pos = 0;
+    const auto fp = take_vector<char>(b, pos);
+    out.case_fingerprint.assign(fp.begin(), fp.end());
+    out.ranks = take<int>(b, pos);
+    out.solver = take<SolverState>(b, pos);
+    OutputState& o = out.output;
+    o.out_next = take<double>(b, pos);
+    o.last_output_time = take<double>(b, pos);
+    o.wall_seconds = take<double>(b, pos);
+    o.probe_next = take_vector<double>(b, pos);
+    o.probe_bytes = take_vector<std::uint64_t>(b, pos);
+    o.snapshot_time = take_vector<double>(b, pos);
+    o.snapshot_particles = take_vector<std::uint64_t>(b, pos);
+    return out;
+}
+
+// A small dataset every rank knows in full: rank 0 writes it.
+template <class T>
+void write_small(const h5::World& w, hid_t file, const char* name, const std::vector<T>& data,
+                 hid_t mem_type, hid_t file_type) {
+    const h5::Slice slice{0, w.rank == 0 ? data.size() : 0, data.size()};
+    h5::write_rows(w, file, name, data.data(), slice, 1, mem_type, file_type, true);
 }
 
 // Particle columns are stored as 64-bit floats whatever sluice::Real is; HDF5 converts from and
@@ -76,17 +124,19 @@ hid_t native_real() {
 }
 
 template <int D>
-std::vector<Real> flat(const std::vector<Vec<D>>& v) {
-    std::vector<Real> out(D * v.size());
-    for (std::size_t i = 0; i < v.size(); ++i)
+std::vector<Real> flat(const std::vector<Vec<D>>& v, std::size_t n) {
+    std::vector<Real> out(D * n);
+    for (std::size_t i = 0; i < n; ++i)
         for (int a = 0; a < D; ++a)
             out[D * i + static_cast<std::size_t>(a)] = v[i][a];
     return out;
 }
 
 template <int D>
-void write_h5(const std::string& path, const Checkpoint<D>& c) {
-    const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+void write_h5(const h5::World& w, const std::string& path, const CheckpointHeader& c,
+              const Particles<D>& P, std::size_t n) {
+    const Handle fapl = h5::file_access(w);
+    const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose,
                       "create " + path);
     const hid_t f = file.get();
     write_string_attribute(f, "format", kFormat);
@@ -114,27 +164,33 @@ void write_h5(const std::string& path, const Checkpoint<D>& c) {
     real("last_output_time", c.output.last_output_time);
     real("wall_seconds", c.output.wall_seconds);
 
-    const Particles<D>& P = c.particles;
-    std::vector<std::uint64_t> ids(P.id.begin(), P.id.end());
-    std::vector<std::uint8_t> kinds(P.size());
-    for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.size() < n)
+        throw std::logic_error("checkpoint: fewer particles than the count to write");
+    const h5::Slice slice = h5::slice_of_count(w, n);
+    const auto rows = [&](const char* name, const void* data, std::size_t cols, hid_t mem_type,
+                          hid_t file_type) {
+        h5::write_rows(w, f, name, data, slice, cols, mem_type, file_type, true);
+    };
+    const std::vector<std::uint64_t> ids(P.id.begin(),
+                                         P.id.begin() + static_cast<std::ptrdiff_t>(n));
+    std::vector<std::uint8_t> kinds(n);
+    for (std::size_t i = 0; i < n; ++i)
         kinds[i] = static_cast<std::uint8_t>(P.kind[i]);
-    write_column(f, "id", ids, 1, H5T_NATIVE_UINT64, H5T_STD_U64LE);
-    write_column(f, "kind", kinds, 1, H5T_NATIVE_UINT8, H5T_STD_U8LE);
-    write_column(f, "x", flat<D>(P.x), D, native_real(), H5T_IEEE_F64LE);
-    write_column(f, "x_ref", flat<D>(P.x_ref), D, native_real(), H5T_IEEE_F64LE);
-    write_column(f, "v", flat<D>(P.v), D, native_real(), H5T_IEEE_F64LE);
-    write_column(f, "v_half", flat<D>(P.v_half), D, native_real(), H5T_IEEE_F64LE);
-    write_column(f, "a", flat<D>(P.a), D, native_real(), H5T_IEEE_F64LE);
-    write_column(f, "rho", P.rho, 1, native_real(), H5T_IEEE_F64LE);
-    write_column(f, "mass", P.mass, 1, native_real(), H5T_IEEE_F64LE);
-    write_column(f, "p", P.p, 1, native_real(), H5T_IEEE_F64LE);
+    rows("id", ids.data(), 1, H5T_NATIVE_UINT64, H5T_STD_U64LE);
+    rows("kind", kinds.data(), 1, H5T_NATIVE_UINT8, H5T_STD_U8LE);
+    rows("x", flat<D>(P.x, n).data(), D, native_real(), H5T_IEEE_F64LE);
+    rows("x_ref", flat<D>(P.x_ref, n).data(), D, native_real(), H5T_IEEE_F64LE);
+    rows("v", flat<D>(P.v, n).data(), D, native_real(), H5T_IEEE_F64LE);
+    rows("v_half", flat<D>(P.v_half, n).data(), D, native_real(), H5T_IEEE_F64LE);
+    rows("a", flat<D>(P.a, n).data(), D, native_real(), H5T_IEEE_F64LE);
+    rows("rho", P.rho.data(), 1, native_real(), H5T_IEEE_F64LE);
+    rows("mass", P.mass.data(), 1, native_real(), H5T_IEEE_F64LE);
+    rows("p", P.p.data(), 1, native_real(), H5T_IEEE_F64LE);
     const OutputState& o = c.output;
-    write_column(f, "probe_next", o.probe_next, 1, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
-    write_column(f, "probe_bytes", o.probe_bytes, 1, H5T_NATIVE_UINT64, H5T_STD_U64LE);
-    write_column(f, "snapshot_time", o.snapshot_time, 1, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
-    write_column(f, "snapshot_particles", o.snapshot_particles, 1, H5T_NATIVE_UINT64,
-                 H5T_STD_U64LE);
+    write_small(w, f, "probe_next", o.probe_next, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
+    write_small(w, f, "probe_bytes", o.probe_bytes, H5T_NATIVE_UINT64, H5T_STD_U64LE);
+    write_small(w, f, "snapshot_time", o.snapshot_time, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
+    write_small(w, f, "snapshot_particles", o.snapshot_particles, H5T_NATIVE_UINT64, H5T_STD_U64LE);
     check(H5Fflush(f, H5F_SCOPE_LOCAL), "flush " + path);
 }
 
@@ -190,13 +246,13 @@ T read_attribute(hid_t obj, const char* name, hid_t mem_type) {
     return v;
 }
 
-// A dataset of `cols` values per row; `rows` (if not npos) is the row count it must have.
-template <class T>
-std::vector<T> read_column(hid_t file, const char* name, std::size_t cols, hid_t mem_type,
-                           std::size_t rows = std::string::npos) {
+// Opens a dataset of `cols` values per row and returns its row count; `rows` (if not npos) is
+// the row count it must have.
+std::pair<Handle, std::size_t> open_rows(hid_t file, const char* name, std::size_t cols,
+                                         std::size_t rows) {
     if (H5Lexists(file, name, H5P_DEFAULT) <= 0)
         throw Refused(fmt::format("dataset '{}' is missing", name));
-    const Handle set(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose, std::string("open ") + name);
+    Handle set(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose, std::string("open ") + name);
     const Handle space(H5Dget_space(set.get()), H5Sclose, "read a dataspace");
     const int rank = H5Sget_simple_extent_ndims(space.get());
     std::array<hsize_t, 2> dims{0, 0};
@@ -207,10 +263,26 @@ std::vector<T> read_column(hid_t file, const char* name, std::size_t cols, hid_t
     const auto n = static_cast<std::size_t>(dims[0]);
     if (rows != std::string::npos && n != rows)
         throw Refused(fmt::format("dataset '{}' has {} rows, expected {}", name, n, rows));
-    std::vector<T> data(n * cols);
-    if (n > 0 && H5Dread(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
+    return {std::move(set), n};
+}
+
+// Rows `slice` of a dataset of slice.total rows of `cols` values.
+template <class T>
+std::vector<T> read_slice(hid_t file, const char* name, std::size_t cols, hid_t mem_type,
+                          const h5::Slice& slice) {
+    const auto [set, n] = open_rows(file, name, cols, slice.total);
+    std::vector<T> data(slice.count * cols);
+    if (!h5::read_rows(set.get(), data.data(), slice, cols, mem_type))
         throw Refused(fmt::format("dataset '{}' cannot be read (damaged: checksum or size)", name));
     return data;
+}
+
+// A whole dataset of `cols` values per row; `rows` (if not npos) is the row count it must have.
+template <class T>
+std::vector<T> read_column(hid_t file, const char* name, std::size_t cols, hid_t mem_type,
+                           std::size_t rows = std::string::npos) {
+    const std::size_t n = open_rows(file, name, cols, rows).second;
+    return read_slice<T>(file, name, cols, mem_type, h5::Slice{0, n, n});
 }
 
 template <int D>
@@ -223,9 +295,11 @@ std::vector<Vec<D>> vectors(const std::vector<Real>& flat_values) {
 }
 
 template <int D>
-Checkpoint<D> read_h5(const std::string& path, const std::string& case_fingerprint) {
+Checkpoint<D> read_h5(const h5::World& w, const std::string& path,
+                      const std::string& case_fingerprint) {
     const h5::QuietErrors quiet;
-    const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    const Handle fapl = h5::file_access(w);
+    const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl.get());
     if (id < 0)
         throw Refused("not a readable HDF5 file (truncated, damaged or of another format)");
     const Handle file(id, H5Fclose, "open " + path);
@@ -268,9 +342,13 @@ Checkpoint<D> read_h5(const std::string& path, const std::string& case_fingerpri
         throw Refused(
             fmt::format("implausible state: step {}, t = {}, dt = {}", s.step, s.time, s.dt));
 
-    const auto ids = read_column<std::uint64_t>(f, "id", 1, H5T_NATIVE_UINT64);
+    // This rank's even share of the rows.
+    const h5::Slice slice = h5::even_slice(w, open_rows(f, "id", 1, std::string::npos).second);
+    c.first = slice.offset;
+    c.total_particles = slice.total;
+    const auto ids = read_slice<std::uint64_t>(f, "id", 1, H5T_NATIVE_UINT64, slice);
     const std::size_t n = ids.size();
-    const auto kinds = read_column<std::uint8_t>(f, "kind", 1, H5T_NATIVE_UINT8, n);
+    const auto kinds = read_slice<std::uint8_t>(f, "kind", 1, H5T_NATIVE_UINT8, slice);
     Particles<D>& P = c.particles;
     P.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -280,16 +358,16 @@ Checkpoint<D> read_h5(const std::string& path, const std::string& case_fingerpri
         P.kind[i] = static_cast<Kind>(kinds[i]);
     }
     const auto vec = [&](const char* name) {
-        return vectors<D>(read_column<Real>(f, name, D, native_real(), n));
+        return vectors<D>(read_slice<Real>(f, name, D, native_real(), slice));
     };
     P.x = vec("x");
     P.x_ref = vec("x_ref");
     P.v = vec("v");
     P.v_half = vec("v_half");
     P.a = vec("a");
-    P.rho = read_column<Real>(f, "rho", 1, native_real(), n);
-    P.mass = read_column<Real>(f, "mass", 1, native_real(), n);
-    P.p = read_column<Real>(f, "p", 1, native_real(), n);
+    P.rho = read_slice<Real>(f, "rho", 1, native_real(), slice);
+    P.mass = read_slice<Real>(f, "mass", 1, native_real(), slice);
+    P.p = read_slice<Real>(f, "p", 1, native_real(), slice);
     OutputState& o = c.output;
     o.probe_next = read_column<double>(f, "probe_next", 1, H5T_NATIVE_DOUBLE);
     o.probe_bytes =
@@ -322,44 +400,70 @@ void discard_partial_checkpoint(const std::string& path) {
 }
 
 template <int D>
-void write_checkpoint(const std::string& path, const Checkpoint<D>& c) {
+void write_checkpoint(const std::string& path, const CheckpointHeader& header,
+                      const Particles<D>& particles, std::size_t count) {
+    const h5::World w = h5::world();
     const fs::path final_path(path);
     const fs::path tmp = temporary_path(final_path);
     const fs::path dir = tmp.parent_path();
+    // Every rank writes its slice of the temporary file (closed collectively when write_h5
+    // returns); rank 0 alone flushes it to disk and renames it.
+    std::optional<std::string> error;
     try {
-        write_h5<D>(tmp.string(), c); // closed when it returns
-        sync_to_disk(tmp, false);
-    } catch (...) {
+        write_h5<D>(w, tmp.string(), rank0_header(w, header), particles, count);
+        if (w.rank == 0)
+            sync_to_disk(tmp, false);
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    if (const auto first = h5::first_error(w, error)) {
         std::error_code ec;
-        fs::remove(tmp, ec);
-        throw;
+        if (w.rank == 0)
+            fs::remove(tmp, ec);
+        throw std::runtime_error(*first);
     }
-    std::error_code ec;
-    fs::rename(tmp, final_path, ec); // atomic: the old checkpoint or the new, never neither
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error(fmt::format("cannot move {} to {}: {}", tmp.string(),
-                                             final_path.string(), ec.message()));
+    if (w.rank == 0) {
+        std::error_code ec;
+        fs::rename(tmp, final_path, ec); // atomic: the old checkpoint or the new, never neither
+        if (ec) {
+            error = fmt::format("cannot move {} to {}: {}", tmp.string(), final_path.string(),
+                                ec.message());
+            fs::remove(tmp, ec);
+        } else {
+            try {
+                sync_to_disk(dir, true);
+            } catch (const std::exception& e) {
+                error = e.what();
+            }
+        }
     }
-    sync_to_disk(dir, true);
+    if (const auto first = h5::first_error(w, error))
+        throw std::runtime_error(*first);
 }
 
 template <int D>
 Checkpoint<D> read_checkpoint(const std::string& path, const std::string& case_fingerprint) {
+    const h5::World w = h5::world();
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
         throw CaseError(path, "", "refused as a checkpoint: no such file");
+    // A damaged chunk may lie in one rank's share only: every rank refuses together.
+    std::optional<std::string> error;
+    Checkpoint<D> c;
     try {
-        return read_h5<D>(path, case_fingerprint);
-    } catch (const Refused& e) {
-        throw CaseError(path, "", std::string("refused as a checkpoint: ") + e.what());
-    } catch (const std::runtime_error& e) {
-        throw CaseError(path, "", std::string("refused as a checkpoint: ") + e.what());
+        c = read_h5<D>(w, path, case_fingerprint);
+    } catch (const std::runtime_error& e) { // Refused, or HDF5 failing
+        error = e.what();
     }
+    if (const auto first = h5::first_error(w, error))
+        throw CaseError(path, "", std::string("refused as a checkpoint: ") + *first);
+    return c;
 }
 
-template void write_checkpoint<2>(const std::string&, const Checkpoint<2>&);
-template void write_checkpoint<3>(const std::string&, const Checkpoint<3>&);
+template void write_checkpoint<2>(const std::string&, const CheckpointHeader&, const Particles<2>&,
+                                  std::size_t);
+template void write_checkpoint<3>(const std::string&, const CheckpointHeader&, const Particles<3>&,
+                                  std::size_t);
 template Checkpoint<2> read_checkpoint<2>(const std::string&, const std::string&);
 template Checkpoint<3> read_checkpoint<3>(const std::string&, const std::string&);
 

@@ -25,7 +25,12 @@ public:
     }
     Handle(const Handle&) = delete;
     Handle& operator=(const Handle&) = delete;
-    ~Handle() { close_(id_); }
+    Handle(Handle&& o) noexcept : id_(o.id_), close_(o.close_) { o.id_ = -1; }
+    Handle& operator=(Handle&&) = delete;
+    ~Handle() {
+        if (id_ >= 0)
+            close_(id_);
+    }
     [[nodiscard]] hid_t get() const { return id_; }
 
 private:

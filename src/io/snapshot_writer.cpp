@@ -3,13 +3,14 @@
 
 #include <fmt/format.h>
 
-#include "hdf5_util.hpp"
+#include "h5_parallel.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -29,32 +30,12 @@ bool is_vector_field(const std::string& f) {
     return f == "position" || f == "velocity" || f == "acceleration";
 }
 
-// Writes `data` (row-major, cols values per particle) as dataset `name` of
-// shape N or N x 3.
-template <class T>
-void write_dataset(hid_t file, const std::string& name, const std::vector<T>& data, std::size_t n,
-                   std::size_t cols, hid_t mem_type, hid_t file_type) {
-    const std::array<hsize_t, 2> dims{n, cols};
-    const Handle space(H5Screate_simple(cols == 1 ? 1 : 2, dims.data(), nullptr), H5Sclose,
-                       "create the dataspace of " + name);
-    // No modification times in the object headers: the same state gives the same file, byte
-    // for byte (runs on different rank/thread counts are compared with cmp).
-    const Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "create dataset properties");
-    check(H5Pset_obj_track_times(dcpl.get(), false), "switch off time tracking");
-    const Handle set(H5Dcreate2(file, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(),
-                                H5P_DEFAULT),
-                     H5Dclose, "create dataset " + name);
-    if (n > 0)
-        check(H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
-              "write dataset " + name);
-}
-
-// N x 3 copy of a D-vector field; 2-D gets z = 0 so every viewer sees 3-D
-// points.
+// N x 3 copy of the first n values of a D-vector field; 2-D gets z = 0 so every viewer sees
+// 3-D points.
 template <int D>
-std::vector<double> padded(const std::vector<Vec<D>>& v) {
-    std::vector<double> out(3 * v.size(), 0.0);
-    for (std::size_t i = 0; i < v.size(); ++i)
+std::vector<double> padded(const std::vector<Vec<D>>& v, std::size_t n) {
+    std::vector<double> out(3 * n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
         for (int a = 0; a < D; ++a)
             out[3 * i + static_cast<std::size_t>(a)] = v[i][a];
     return out;
@@ -62,7 +43,7 @@ std::vector<double> padded(const std::vector<Vec<D>>& v) {
 
 template <class T>
 void require_size(const std::vector<T>& v, std::size_t n, const std::string& field) {
-    if (v.size() != n)
+    if (v.size() < n)
         throw std::logic_error(
             fmt::format("snapshot: field {} has {} entries for {} particles", field, v.size(), n));
 }
@@ -83,10 +64,21 @@ template <int D>
 SnapshotWriter<D>::SnapshotWriter(std::string out_dir, std::vector<std::string> fields)
     : out_dir_(std::move(out_dir)), xmf_path_((fs::path(out_dir_) / "snapshots.xmf").string()) {
     init_fields(std::move(fields));
-    // An earlier run's files would otherwise sit beside this run's, or be listed
-    // by the .xmf.
-    remove_from(0);
-    fs::remove(xmf_path_);
+    const h5::World w = h5::world();
+    std::optional<std::string> error;
+    if (w.rank == 0) {
+        try {
+            fs::create_directories(fs::path(out_dir_) / "snapshots");
+            // An earlier run's files would otherwise sit beside this run's, or be listed
+            // by the .xmf.
+            remove_from(0);
+            fs::remove(xmf_path_);
+        } catch (const std::exception& e) {
+            error = e.what();
+        }
+    }
+    if (const auto first = h5::first_error(w, error))
+        throw std::runtime_error(*first);
 }
 
 template <int D>
@@ -94,19 +86,30 @@ SnapshotWriter<D>::SnapshotWriter(std::string out_dir, std::vector<std::string> 
                                   const std::vector<Earlier>& earlier)
     : out_dir_(std::move(out_dir)), xmf_path_((fs::path(out_dir_) / "snapshots.xmf").string()) {
     init_fields(std::move(fields));
-    for (std::size_t k = 0; k < earlier.size(); ++k) {
-        const std::string rel = relative_path(k);
-        if (!fs::exists(fs::path(out_dir_) / rel))
-            throw std::runtime_error(
-                fmt::format("cannot continue the snapshot series: {} is missing",
-                            (fs::path(out_dir_) / rel).string()));
-        written_.push_back({rel, earlier[k].time, earlier[k].particles});
+    const h5::World w = h5::world();
+    std::optional<std::string> error;
+    try {
+        for (std::size_t k = 0; k < earlier.size(); ++k) {
+            const std::string rel = relative_path(k);
+            if (!fs::exists(fs::path(out_dir_) / rel))
+                throw std::runtime_error(
+                    fmt::format("cannot continue the snapshot series: {} is missing",
+                                (fs::path(out_dir_) / rel).string()));
+            written_.push_back({rel, earlier[k].time, earlier[k].particles});
+        }
+        if (w.rank == 0) {
+            fs::create_directories(fs::path(out_dir_) / "snapshots");
+            remove_from(earlier.size());
+            if (written_.empty())
+                fs::remove(xmf_path_);
+            else
+                write_xmf();
+        }
+    } catch (const std::exception& e) {
+        error = e.what();
     }
-    remove_from(earlier.size());
-    if (written_.empty())
-        fs::remove(xmf_path_);
-    else
-        write_xmf();
+    if (const auto first = h5::first_error(w, error))
+        throw std::runtime_error(*first);
 }
 
 template <int D>
@@ -118,7 +121,6 @@ void SnapshotWriter<D>::init_fields(std::vector<std::string> fields) {
         if (std::find(fields_.begin(), fields_.end(), f) == fields_.end())
             fields_.push_back(std::move(f));
     }
-    fs::create_directories(fs::path(out_dir_) / "snapshots");
 }
 
 template <int D>
@@ -160,20 +162,26 @@ std::vector<typename SnapshotWriter<D>::Earlier> SnapshotWriter<D>::written() co
 }
 
 template <int D>
-void SnapshotWriter<D>::write_h5(const std::string& path, const Particles<D>& ps, double time,
-                                 long step) const {
-    const std::size_t n = ps.size();
-    const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+std::uint64_t SnapshotWriter<D>::write_h5(const std::string& path, const Particles<D>& ps,
+                                          std::size_t n, double time, long step) const {
+    const h5::World w = h5::world();
+    const h5::Slice slice = h5::slice_of_count(w, n);
+    const Handle fapl = h5::file_access(w);
+    const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose,
                       "create " + path);
     const hid_t f = file.get();
+    const auto rows = [&](const std::string& name, const void* data, std::size_t cols,
+                          hid_t mem_type, hid_t file_type) {
+        h5::write_rows(w, f, name, data, slice, cols, mem_type, file_type, false);
+    };
     const auto vec3 = [&](const std::string& name, const std::vector<Vec<D>>& v) {
         require_size(v, n, name);
-        write_dataset(f, name, padded<D>(v), n, 3, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
+        rows(name, padded<D>(v, n).data(), 3, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
     };
     const auto scalar = [&](const std::string& name, const std::vector<Real>& v) {
         require_size(v, n, name);
-        write_dataset(f, name, std::vector<double>(v.begin(), v.end()), n, 1, H5T_NATIVE_DOUBLE,
-                      H5T_IEEE_F64LE);
+        const std::vector<double> values(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n));
+        rows(name, values.data(), 1, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
     };
     for (const auto& field : fields_) {
         if (field == "position")
@@ -190,38 +198,60 @@ void SnapshotWriter<D>::write_h5(const std::string& path, const Particles<D>& ps
             scalar(field, ps.mass);
         else if (field == "id") {
             require_size(ps.id, n, field);
-            std::vector<std::uint64_t> ids(ps.id.begin(), ps.id.end());
-            write_dataset(f, field, ids, n, 1, H5T_NATIVE_UINT64, H5T_STD_U64LE);
+            const std::vector<std::uint64_t> ids(ps.id.begin(),
+                                                 ps.id.begin() + static_cast<std::ptrdiff_t>(n));
+            rows(field, ids.data(), 1, H5T_NATIVE_UINT64, H5T_STD_U64LE);
         } else if (field == "kind") {
             require_size(ps.kind, n, field);
             std::vector<std::uint8_t> kinds(n);
             for (std::size_t i = 0; i < n; ++i)
                 kinds[i] = static_cast<std::uint8_t>(ps.kind[i]);
-            write_dataset(f, field, kinds, n, 1, H5T_NATIVE_UINT8, H5T_STD_U8LE);
+            rows(field, kinds.data(), 1, H5T_NATIVE_UINT8, H5T_STD_U8LE);
         }
     }
     write_attribute(f, "time", time, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
     write_attribute(f, "step", static_cast<std::int64_t>(step), H5T_NATIVE_INT64, H5T_STD_I64LE);
     write_attribute(f, "dimension", static_cast<std::int32_t>(D), H5T_NATIVE_INT32, H5T_STD_I32LE);
     check(H5Fflush(f, H5F_SCOPE_LOCAL), "flush " + path);
+    return slice.total;
 }
 
 template <int D>
-std::string SnapshotWriter<D>::write(const Particles<D>& ps, double time, long step) {
+std::string SnapshotWriter<D>::write(const Particles<D>& ps, std::size_t count, double time,
+                                     long step) {
+    const h5::World w = h5::world();
     const std::string rel = relative_path(written_.size());
     const fs::path final_path = fs::path(out_dir_) / rel;
     const fs::path tmp =
         fs::path(out_dir_) / fmt::format("snapshots/.snap_{:06d}.h5.tmp", written_.size());
+    // Every rank writes its slice of the temporary file (closed collectively when write_h5
+    // returns); rank 0 alone renames it and rewrites the .xmf.
+    std::optional<std::string> error;
+    std::uint64_t total = 0;
     try {
-        write_h5(tmp.string(), ps, time, step);
-    } catch (...) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw;
+        total = write_h5(tmp.string(), ps, count, time, step);
+    } catch (const std::exception& e) {
+        error = e.what();
     }
-    replace_file(tmp, final_path);
-    written_.push_back({rel, time, ps.size()});
-    write_xmf();
+    if (const auto first = h5::first_error(w, error)) {
+        std::error_code ec;
+        if (w.rank == 0)
+            fs::remove(tmp, ec);
+        throw std::runtime_error(*first);
+    }
+    written_.push_back({rel, time, static_cast<std::size_t>(total)});
+    if (w.rank == 0) {
+        try {
+            replace_file(tmp, final_path);
+            write_xmf();
+        } catch (const std::exception& e) {
+            error = e.what();
+        }
+    }
+    if (const auto first = h5::first_error(w, error)) {
+        written_.pop_back();
+        throw std::runtime_error(*first);
+    }
     return final_path.string();
 }
 

@@ -13,8 +13,10 @@
 #include "sluice/solver/output_schedule.hpp"
 #include "sluice/solver/simulation.hpp"
 
+#include "memory_use.hpp"
 #include "probe_sampling.hpp"
 #include "run_report.hpp"
+#include "run_totals.hpp"
 #include "stop_signals.hpp"
 
 #include <tbb/global_control.h>
@@ -75,7 +77,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     so.log_rebalances = !opts.quiet;
     so.debug_fail_rank = opts.debug_fail_rank;
     so.debug_fail_step = opts.debug_fail_step;
-    // A restart: every rank reads the whole checkpoint (and keeps its part of the particles).
+    // A restart: every rank reads the checkpoint's header and an even share of its particles
+    // (collective); the Simulation sends the shares to the ranks that own them.
     const bool resumed = !opts.restart_dir.empty();
     std::optional<Checkpoint<D>> resume;
     if (resumed) {
@@ -102,6 +105,14 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
              "results in {}",
              cfg.name, cfg.source_file, sim.comm().rank(), sim.comm().size(), threads, sim.owned(),
              opts.out_dir);
+    // Peak resident memory of this rank at three points (perf/memory reads these lines).
+    const auto log_memory = [&log](const char* when) {
+        const ResidentMemory m = resident_memory();
+        log.file_only(fmt::format("memory: peak resident {:.1f} MiB {} (resident now {:.1f} MiB)",
+                                  static_cast<double>(m.peak) / (1 << 20), when,
+                                  static_cast<double>(m.now) / (1 << 20)));
+    };
+    log_memory("after the initial state");
 
     std::unique_ptr<SnapshotWriter<D>> snapshots;
     std::unique_ptr<ProbeWriter> probe_files;
@@ -112,13 +123,16 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         if (!resumed)
             fs::remove(checkpoint_file); // an earlier run's: its snapshots are going
         discard_partial_checkpoint(checkpoint_file);
+    }
+    // Every rank writes its slice of each snapshot (rank 0 alone touches the folder).
+    if (cfg.snapshots) {
         std::vector<typename SnapshotWriter<D>::Earlier> earlier;
         for (std::size_t k = 0; k < start.snapshot_time.size(); ++k)
             earlier.push_back({start.snapshot_time[k], start.snapshot_particles[k]});
-        if (cfg.snapshots)
-            snapshots = resumed
-                            ? std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields, earlier)
+        snapshots = resumed ? std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields, earlier)
                             : std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
+    }
+    if (root) {
         probe_files =
             resumed ? std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes, start.probe_bytes)
                     : std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes, D);
@@ -128,8 +142,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     if (resumed)
         schedule.resume(start, sim.time());
     // Every rank takes the same decisions (same time). The probes are evaluated where the
-    // particles are (probe_sampling.hpp); the particles are gathered on rank 0 only for a
-    // snapshot.
+    // particles are (probe_sampling.hpp); each rank writes its own particles into a snapshot.
     auto sample = [&](bool force) {
         const double t = sim.time();
         const OutputSchedule::Due due = schedule.due(t, force);
@@ -140,33 +153,25 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                     probe_files->write(due.probes[n], t, rows[n]);
         }
         if (due.snapshot) {
-            const Particles<D> all = sim.gather_particles();
+            const std::string file = snapshots->write(sim.particles(), sim.owned(), t, sim.steps());
             if (root)
-                log.debug("snapshot {} at t = {:.6g} s (step {})",
-                          snapshots->write(all, t, sim.steps()), t, sim.steps());
+                log.debug("snapshot {} at t = {:.6g} s (step {})", file, t, sim.steps());
         }
         schedule.done(due, t);
     };
 
     RunResult result;
-    // Neighbour pairs by kind at the start and the end (rank 0, outside the timed loop): the
-    // benchmarks turn them into achieved interactions per second per stage.
+    // Neighbour pairs by kind at the start and the end (outside the timed loop, without a
+    // gather: run_totals.hpp): the benchmarks turn them into achieved interactions per second
+    // per stage.
     const Real support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
-    NeighbourCensus census_start;
-    {
-        const Particles<D> all = sim.gather_particles();
-        result.particles = all.size();
-        result.fluid_particles = all.count(Kind::fluid);
-        result.mass_initial = all.total_mass();
-        if (root)
-            census_start = count_neighbours<D>(sim.grid(), all, support);
-    }
-    std::uint64_t total_particles = result.particles;
-    {
-        // Rank 0 knows the count; the others need it for the progress rate.
-        const std::string s = sim.comm().broadcast(std::to_string(total_particles), 0);
-        total_particles = std::stoull(s);
-    }
+    const RunTotals at_start = run_totals<D>(sim, support);
+    result.particles = at_start.particles;
+    result.fluid_particles = at_start.fluid;
+    result.mass_initial = at_start.mass;
+    const NeighbourCensus census_start = at_start.census;
+    log_memory("after start-up");
+    const std::uint64_t total_particles = result.particles;
 
     // Wall time of this segment's time loop so far; earlier segments' is start.wall_seconds
     // (from the checkpoint), so summary.json can report the whole run's.
@@ -175,12 +180,13 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         return std::chrono::duration<double>(Clock::now() - t0).count();
     };
 
-    // Collective: every rank's particles to rank 0, which writes the checkpoint.
+    // Collective: every rank writes its particles; the rest is rank 0's.
     auto write_checkpoint_now = [&] {
-        Checkpoint<D> c;
-        c.particles = sim.gather_particles();
-        if (!root)
+        CheckpointHeader c;
+        if (!root) {
+            write_checkpoint<D>(checkpoint_file, c, sim.particles(), sim.owned());
             return;
+        }
         c.case_fingerprint = cfg.fingerprint;
         c.ranks = sim.comm().size();
         c.solver = sim.solver_state();
@@ -194,16 +200,16 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                 c.output.snapshot_time.push_back(w.time);
                 c.output.snapshot_particles.push_back(w.particles);
             }
-        write_checkpoint(checkpoint_file, c);
+        write_checkpoint<D>(checkpoint_file, c, sim.particles(), sim.owned());
     };
-    // After a failed step every rank holds the state before it: write it for inspection.
+    // After a failed step every rank holds the state before it: write it for inspection
+    // (collective: every rank gets the error from the same step).
     auto last_snapshot = [&](const std::string& label) {
-        const Particles<D> all = sim.gather_particles();
-        if (!root)
-            return std::string();
         if (!snapshots) // snapshots are off: this one is written all the same
             snapshots = std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
-        return fmt::format(", {} in {}", label, snapshots->write(all, sim.time(), sim.steps()));
+        const std::string file =
+            snapshots->write(sim.particles(), sim.owned(), sim.time(), sim.steps());
+        return root ? fmt::format(", {} in {}", label, file) : std::string();
     };
 
     Progress progress(cfg.end_time, opts.quiet || !root, opts.verbose);
@@ -291,13 +297,11 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.particle_steps_per_second = static_cast<double>(total_particles) *
                                        static_cast<double>(result.steps - start_step) /
                                        result.wall_seconds;
-    NeighbourCensus census_end;
-    {
-        const Particles<D> all = sim.gather_particles();
-        result.mass_final = all.total_mass();
-        if (root)
-            census_end = count_neighbours<D>(sim.grid(), all, support);
-    }
+    log_memory("after the time loop");
+    const RunTotals at_end = run_totals<D>(sim, support);
+    result.mass_final = at_end.mass;
+    const NeighbourCensus census_end = at_end.census;
+    log_memory("at the end");
     if (!opts.trace_path.empty())
         sim.write_trace(opts.trace_path);
     if (const PressureSolveTotals* pt = sim.pressure_solve_totals(); pt && pt->solves > 0)

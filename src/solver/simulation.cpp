@@ -201,7 +201,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     // it goes on bitwise (a fresh start has x_ref = x).
     if (resume != nullptr)
         std::swap(P_.x, P_.x_ref);
-    distribute_initial_particles();
+    distribute_initial_particles(resume != nullptr);
     const std::size_t n = P_.size();
     const auto per_group = static_cast<std::size_t>(std::max(1, cfg.particles_per_group));
     const int by_size = static_cast<int>((n + per_group - 1) / per_group);

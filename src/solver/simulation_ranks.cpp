@@ -1,6 +1,7 @@
 // The parts of Simulation<D> that share particles between ranks: the initial distribution,
 // the halo plan of a rebuild, migration to neighbouring ranks, the balancer (its window of busy
-// times and the rebalance, at a rebuild or between rebuilds) and the gather to rank 0 for output.
+// times and the rebalance, at a rebuild or between rebuilds), the distribution of a checkpoint's
+// shares at a restart, and the gather to rank 0 that tests use.
 // Pure data movement and bookkeeping; the step itself is in simulation.cpp.
 #include "sluice/solver/simulation.hpp"
 
@@ -13,10 +14,11 @@
 namespace sluice {
 
 template <int D>
-void Simulation<D>::distribute_initial_particles() {
+void Simulation<D>::distribute_initial_particles(bool shares) {
     if (!comm_.parallel())
         return;
-    // Every rank generated the same particles; each keeps the cells of its part of the curve.
+    // Either every rank generated the same particles, or (a restart) each holds a share of
+    // them; each ends with the cells of its part of the curve.
     rebinner_(grid_, P_, ranges_, occupied_);
     if (cfg_.initial_decomposition == InitialDecomposition::key_range) {
         layout_ = tasks::cut_ranks_by_key(grid_, comm_.size());
@@ -25,16 +27,59 @@ void Simulation<D>::distribute_initial_particles() {
         units.reserve(occupied_.size());
         for (const auto& c : occupied_)
             units.push_back({c.key, static_cast<double>(c.count)});
+        if (shares)
+            units = all_occupied_cells(units);
         layout_ = tasks::cut_ranks(units, comm_.size());
     }
     peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
     std::vector<std::size_t> keep;
-    for (const auto& c : occupied_)
-        if (layout_.rank_of(c.key) == comm_.rank())
-            for (std::uint32_t i = ranges_.begin[c.cell]; i < ranges_.end[c.cell]; ++i)
+    std::vector<tasks::Bytes> out(shares ? static_cast<std::size_t>(comm_.size()) : 0), in;
+    for (const auto& c : occupied_) {
+        const int owner = layout_.rank_of(c.key);
+        for (std::uint32_t i = ranges_.begin[c.cell]; i < ranges_.end[c.cell]; ++i)
+            if (owner == comm_.rank())
                 keep.push_back(i);
+            else if (shares)
+                messages::pack_particle(P_, i, out[static_cast<std::size_t>(owner)]);
+    }
+    if (shares)
+        comm_.all_to_all(out, in);
     P_.permute(keep);
     P_.resize(keep.size());
+    // Arrival order does not matter: the rebin sorts by (cell key, id).
+    for (const auto& b : in)
+        messages::unpack_particles<D>(b, P_);
+}
+
+template <int D>
+std::vector<tasks::CurveUnit>
+Simulation<D>::all_occupied_cells(const std::vector<tasks::CurveUnit>& mine) const {
+    // Every rank's occupied cells with their particle counts; a cell may straddle two shares,
+    // so equal keys are merged. The result is the list one rank holding every particle makes.
+    tasks::Bytes b;
+    for (const auto& u : mine) {
+        tasks::put(b, u.key);
+        tasks::put(b, u.cost);
+    }
+    std::vector<tasks::CurveUnit> all;
+    for (const auto& part : comm_.all_gather(b)) {
+        std::size_t pos = 0;
+        while (pos < part.size()) {
+            tasks::CurveUnit u{};
+            u.key = tasks::take<MortonKey>(part, pos);
+            u.cost = tasks::take<double>(part, pos);
+            all.push_back(u);
+        }
+    }
+    std::stable_sort(all.begin(), all.end(),
+                     [](const auto& a, const auto& b2) { return a.key < b2.key; });
+    std::vector<tasks::CurveUnit> merged;
+    for (const auto& u : all)
+        if (!merged.empty() && merged.back().key == u.key)
+            merged.back().cost += u.cost; // whole particle counts: exact
+        else
+            merged.push_back(u);
+    return merged;
 }
 
 template <int D>
@@ -299,7 +344,9 @@ Particles<D> Simulation<D>::gather_particles() const {
 }
 
 #define SLUICE_RANK_MEMBERS(D)                                                                     \
-    template void Simulation<D>::distribute_initial_particles();                                   \
+    template void Simulation<D>::distribute_initial_particles(bool);                               \
+    template std::vector<tasks::CurveUnit> Simulation<D>::all_occupied_cells(                      \
+        const std::vector<tasks::CurveUnit>&) const;                                               \
     template void Simulation<D>::plan_halo();                                                      \
     template std::vector<std::vector<int>> Simulation<D>::boundary_groups() const;                 \
     template void Simulation<D>::migrate_to_neighbours();                                          \

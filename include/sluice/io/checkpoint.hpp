@@ -17,8 +17,14 @@
 // rather than read. The file is written under a temporary name, flushed to disk (fsync) and
 // renamed over the previous checkpoint: at every moment the latest complete checkpoint is on
 // disk under the final name.
+//
+// On several MPI ranks the particles are never gathered: every rank writes its slice of the
+// particle datasets through MPI-IO (collectively, at the offset of the ranks before it in
+// curve order) and reads back an even share of them; the file is the same for any rank
+// layout, except for the attributes ranks and wall_seconds.
 #include "sluice/core/particles.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -50,13 +56,21 @@ struct OutputState {
     double wall_seconds = 0;
 };
 
-template <int D>
-struct Checkpoint {
+// Everything but the particles.
+struct CheckpointHeader {
     std::string case_fingerprint;
     int ranks = 1; // the run that wrote it had this many ranks (any number may continue it)
     SolverState solver;
     OutputState output;
-    Particles<D> particles; // every particle (fluid and wall), in curve order
+};
+
+template <int D>
+struct Checkpoint : CheckpointHeader {
+    // This rank's share of the particles (fluid and wall) in curve order: rows
+    // [first, first + particles.size()) of the file's total_particles. On one rank, all of them.
+    Particles<D> particles;
+    std::uint64_t first = 0;
+    std::uint64_t total_particles = 0;
 };
 
 // The checkpoint file of a results folder.
@@ -65,20 +79,31 @@ std::string checkpoint_path(const std::string& results_dir);
 // Removes the temporary file an interrupted write_checkpoint(path, ...) left (if any).
 void discard_partial_checkpoint(const std::string& path);
 
-// Writes `c` to `path` atomically (see above). Throws std::runtime_error on failure; the
-// previous file at `path` is then untouched.
+// Writes `header` and this rank's first `count` particles to `path` atomically (see above).
+// Collective on several MPI ranks: every rank passes its slice, ranks in curve order; the
+// header is rank 0's. Throws std::runtime_error on failure (on every rank); the previous file
+// at `path` is then untouched.
 template <int D>
-void write_checkpoint(const std::string& path, const Checkpoint<D>& c);
+void write_checkpoint(const std::string& path, const CheckpointHeader& header,
+                      const Particles<D>& particles, std::size_t count);
+// One rank's convenience: `c` with all its particles.
+template <int D>
+void write_checkpoint(const std::string& path, const Checkpoint<D>& c) {
+    write_checkpoint<D>(path, c, c.particles, c.particles.size());
+}
 
-// Reads a checkpoint for a case whose fingerprint is `case_fingerprint`. Refuses (throws
-// sluice::CaseError naming the file and the reason) a missing, truncated or damaged file, a
-// file that is no sluice checkpoint, another format version, another dimension, or a
-// checkpoint written for another case.
+// Reads a checkpoint for a case whose fingerprint is `case_fingerprint`: the header and this
+// rank's even share of the particles (collective on several ranks, any number of them).
+// Refuses (throws sluice::CaseError naming the file and the reason, on every rank) a missing,
+// truncated or damaged file, a file that is no sluice checkpoint, another format version,
+// another dimension, or a checkpoint written for another case.
 template <int D>
 Checkpoint<D> read_checkpoint(const std::string& path, const std::string& case_fingerprint);
 
-extern template void write_checkpoint<2>(const std::string&, const Checkpoint<2>&);
-extern template void write_checkpoint<3>(const std::string&, const Checkpoint<3>&);
+extern template void write_checkpoint<2>(const std::string&, const CheckpointHeader&,
+                                         const Particles<2>&, std::size_t);
+extern template void write_checkpoint<3>(const std::string&, const CheckpointHeader&,
+                                         const Particles<3>&, std::size_t);
 extern template Checkpoint<2> read_checkpoint<2>(const std::string&, const std::string&);
 extern template Checkpoint<3> read_checkpoint<3>(const std::string&, const std::string&);
 

@@ -13,6 +13,7 @@
 #include "sluice/core/particles.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,8 @@ template <int D>
 class SnapshotWriter {
 public:
     // Creates <out_dir>/snapshots/ and removes snapshots of an earlier run in the same folder
-    // (snap_*.h5 and snapshots.xmf), so the series on disk is always this run's.
+    // (snap_*.h5 and snapshots.xmf), so the series on disk is always this run's. Collective on
+    // several MPI ranks (rank 0 touches the folder).
     // Throws std::invalid_argument for a field name outside the list above.
     SnapshotWriter(std::string out_dir, std::vector<std::string> fields);
 
@@ -42,7 +44,15 @@ public:
 
     // Writes the next snapshot and rewrites the .xmf; returns the path of the .h5 written.
     // Throws std::runtime_error when a file cannot be written.
-    std::string write(const Particles<D>& particles, double time, long step);
+    std::string write(const Particles<D>& particles, double time, long step) {
+        return write(particles, particles.size(), time, step);
+    }
+    // The same from this rank's first `count` particles. On several MPI ranks this is
+    // collective (every rank constructs the writer and calls it with its slice, ranks in curve
+    // order): each writes its slice of the file through MPI-IO at the offset of the ranks
+    // before it, and rank 0 alone touches the folder (removals, renames, the .xmf). The file
+    // is the same for any rank layout, byte for byte. Every rank throws if any rank failed.
+    std::string write(const Particles<D>& particles, std::size_t count, double time, long step);
 
     [[nodiscard]] std::size_t count() const { return written_.size(); }
     [[nodiscard]] const std::string& xmf_path() const { return xmf_path_; }
@@ -56,8 +66,9 @@ private:
         std::size_t particles;
     };
 
-    void write_h5(const std::string& path, const Particles<D>& particles, double time,
-                  long step) const;
+    // Returns the particle count of the file (every rank's together).
+    std::uint64_t write_h5(const std::string& path, const Particles<D>& particles,
+                           std::size_t count, double time, long step) const;
     void write_xmf() const;
     void init_fields(std::vector<std::string> fields);
     // Removes snapshot files numbered `keep` and above, and temporary ones.

@@ -77,8 +77,9 @@ struct ProjectionData; // src/solver/projection_data.hpp
 template <int D>
 class Simulation {
 public:
-    // Collective. With `resume`, the state is the checkpoint's (every rank passes the same one,
-    // holding all particles; each keeps its part) instead of the case's initial state.
+    // Collective. With `resume`, the state is the checkpoint's instead of the case's initial
+    // state: every rank passes its share of the particles (read_checkpoint's, any split in
+    // curve order), and the shares are sent to the ranks that own them.
     explicit Simulation(const CaseConfig& cfg, SimulationOptions opts = {},
                         const Checkpoint<D>* resume = nullptr);
     ~Simulation();
@@ -108,7 +109,8 @@ public:
     [[nodiscard]] Particles<D>& particles() { return P_; }
     [[nodiscard]] std::size_t owned() const { return owned_; }
     // Every rank's particles, in (cell key, id) order, on rank 0 (empty elsewhere; on one rank
-    // a copy of particles()). Collective.
+    // a copy of particles()). Collective. For tests: a run never gathers (output is written by
+    // every rank, src/io/h5_parallel.hpp; totals in src/solver/run_totals.hpp).
     [[nodiscard]] Particles<D> gather_particles() const;
     [[nodiscard]] const tasks::Comm& comm() const { return comm_; }
     [[nodiscard]] const tasks::RankLayout& rank_layout() const { return layout_; }
@@ -151,7 +153,11 @@ public:
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
 
 private:
-    void distribute_initial_particles();
+    // `shares`: every rank holds a share of the particles (a restart), not all of them.
+    void distribute_initial_particles(bool shares);
+    // Every rank's occupied cells (units of particle count) merged in curve order. Collective.
+    [[nodiscard]] std::vector<tasks::CurveUnit>
+    all_occupied_cells(const std::vector<tasks::CurveUnit>& mine) const;
     void rebin_and_decompose();
     void rebuild();
     void migrate_to_neighbours();
