@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h> // getpid: a folder of its own when suites run side by side
+
 using namespace sluice;
 using namespace sluice::testing;
 
@@ -40,8 +42,9 @@ double fluid_momentum_x(const Particles<2>& P) {
 
 TEST_CASE("Block hitting a wall: the force's impulse equals the momentum change") {
     const CaseConfig cfg = read_case(data_path("wall_loads/block_impact_2d.toml"));
-    const std::string out =
-        (std::filesystem::temp_directory_path() / "sluice_test_wall_loads_block_impact").string();
+    const std::string out = (std::filesystem::temp_directory_path() /
+                             ("sluice_test_wall_loads_block_impact_" + std::to_string(::getpid())))
+                                .string();
     std::filesystem::remove_all(out);
     RunOptions opts;
     opts.out_dir = out;

@@ -18,6 +18,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h> // getpid: a folder of its own when suites run side by side
+
 using namespace sluice;
 using namespace sluice::testing;
 
@@ -41,8 +43,9 @@ double worst(const std::string& csv, std::size_t col, double ref, double t0, int
 TEST_CASE("Hydrostatic tank: wall forces, moment and area sensors") {
     const std::string path = data_path("wall_loads/hydrostatic_loads_2d.toml");
     const CaseConfig cfg = read_case(path);
-    const std::string out =
-        (std::filesystem::temp_directory_path() / "sluice_test_wall_loads_hydrostatic").string();
+    const std::string out = (std::filesystem::temp_directory_path() /
+                             ("sluice_test_wall_loads_hydrostatic_" + std::to_string(::getpid())))
+                                .string();
     std::filesystem::remove_all(out);
     RunOptions opts;
     opts.out_dir = out;
