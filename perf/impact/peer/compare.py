@@ -25,6 +25,7 @@ right the first impact). OUT defaults to perf/impact/results.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import io
 import math
 import sys
@@ -96,6 +97,11 @@ def figures(label: str, run: Path, sc: analyse.Scales, exp: dict) -> list[dict]:
 
 
 def run_info(label: str, run: Path, sc: analyse.Scales) -> analyse.RunInfo:
+    """What wall_force_table needs: a peer run's study_run.json (peer_metrics.py) gives its c0;
+    a sluice run of zhou_2d.toml has dx = 0.01 m and c0 = 48.52 m/s unless --set changed them."""
+    if (run / "study_run.json").exists():
+        info = analyse.run_from_study(run)
+        return dataclasses.replace(info, variant=label)
     return analyse.RunInfo(folder=run, variant=label, label=run.name, dx=0.01, c0=48.52,
                            c0_factor=20.0, end_time=math.nan, scales=sc, probes={})
 
@@ -110,13 +116,14 @@ def print_tables(rows: list[dict], exp: dict, exp_b: dict) -> None:
     print("== first impact: per signal (p* = p / rho g H, t* = t sqrt(g/H); window 0.5 t* after "
           "contact; filter 1 ms)")
     print(f"{'signal':22s} {'run':18s} {'t*c':>5s} {'raw':>7s} {'filt':>6s} {'t*pk':>5s} "
-          f"{'I*':>6s} {'min*':>7s} {'<-.5ms':>6s}")
+          f"{'I*':>6s} {'min*':>7s} {'<-.5ms':>6s}  (cut: the run ends inside the window)")
     for name, _, _ in SIGNALS:
         for r in (x for x in rows if x["signal"] == name):
             print(f"{name:22s} {r['run']:18s} {fmt(r['t_contact_star'], '5.2f')} "
                   f"{fmt(r['peak_raw_star'], '7.2f')} {fmt(r['peak_filt_star'], '6.2f')} "
                   f"{fmt(r['t_peak_filt_star'], '5.2f')} {fmt(r['impulse_star'], '6.3f')} "
-                  f"{fmt(r['min_raw_star'], '7.2f')} {fmt(r['neg_longest_ms'], '6.1f')}")
+                  f"{fmt(r['min_raw_star'], '7.2f')} {fmt(r['neg_longest_ms'], '6.1f')}"
+                  f"{'' if r['window_complete'] is not False else '  cut'}")
     print(f"{'experiment P1 (Trixi)':22s} {'':18s} {exp['t_contact_star']:5.2f} "
           f"{exp['peak_raw_star']:7.2f} {exp['peak_filt_star']:6.2f} "
           f"{exp['t_peak_filt_star']:5.2f} {exp['impulse_star']:6.3f}")
