@@ -12,8 +12,8 @@ analyse.py, panels.py and compare.py read both codes alike:
   the probe point (any particle within the support; kclimit 1e-6, a dry point reads density 0
   and is written NaN as sluice writes a dry probe), turned into pressure with the peer's own
   equation of state p = B ((rho/rho0)^gamma - 1), B, gamma and rho0 read from out/Run.out.
-  (The peer's pressure of the interpolated density, not an interpolated pressure: the two
-  differ at second order in the density variation, under 1 % at a 3 % compression.)
+  (The peer's pressure of the interpolated density, not an interpolated pressure: with the
+  Tait EOS the two differ at second order in the spread of the densities within the support.)
 * F_right_wall.csv (time_s,Fx_N,Fy_N): the sum of the force gauges of every particle of the
   downstream wall (Wall_kNN, Wall_above600mm, Wall_corner: the x+ face and the corner it
   shares, like sluice's face = "x+" force probe), N per metre of width. The peer's force gauge
