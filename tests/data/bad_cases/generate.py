@@ -44,6 +44,8 @@ SAMPLE_ENTRIES = {
     "walls.planes": {"point": [0.0, 0.0], "normal": [1.0, 0.0]},
     "walls.boxes": {"lo": [1.0, 0.0], "hi": [1.2, 0.2]},
     "force": {"name": "F", "type": "force", "face": "x+"},
+    # An area sensor on the x- face of the 2-D bases' tank (tank_lo = [0, 0]), 0.1 m up.
+    "area": {"name": "A", "type": "pressure", "position": [0.0, 0.1], "diameter": 0.02},
 }
 
 # ------------------------------------------------------------------------------------------
@@ -437,7 +439,10 @@ def locate(doc, spec):
             parent = parent.setdefault(p, {})
         entries = parent.setdefault(last, [])
         kind = re.match(r'^type = "([a-z_]+)"', spec["when"])
-        if table == "probes" and kind:
+        if table == "probes" and spec["when"].endswith("with a diameter"):
+            entries.append(copy.deepcopy(SAMPLE_ENTRIES["area"]))
+            index = len(entries) - 1
+        elif table == "probes" and kind:
             index = next((i for i, e in enumerate(entries) if e["type"] == kind.group(1)), None)
             if index is None:
                 entries.append(copy.deepcopy(SAMPLE_ENTRIES[kind.group(1)]))
