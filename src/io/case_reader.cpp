@@ -68,6 +68,10 @@ const std::vector<std::pair<std::string, Scheme>> kSchemes = {{"wcsph", Scheme::
                                                               {"projection", Scheme::projection}};
 const std::vector<std::pair<std::string, PressureSolver>> kPressureSolvers = {
     {"bicgstab", PressureSolver::bicgstab}, {"sor", PressureSolver::sor}};
+const std::vector<std::pair<std::string, PressurePreconditioner>> kPreconditioners = {
+    {"jacobi", PressurePreconditioner::jacobi},
+    {"block_lu", PressurePreconditioner::block_lu},
+    {"block_ilu0", PressurePreconditioner::block_ilu0}};
 const std::vector<std::pair<std::string, CorrectionGradient>> kCorrectionGradients = {
     {"second_order", CorrectionGradient::second_order},
     {"first_order", CorrectionGradient::first_order}};
@@ -365,6 +369,9 @@ void read_projection(const Section& s, CaseConfig& c) {
     s.require(iterations >= 1 && iterations <= 1000000, "max_iterations",
               fmt::format("must be between 1 and 1000000, got {}", iterations));
     p.max_iterations = static_cast<int>(iterations);
+    p.preconditioner = s.choice("preconditioner", p.preconditioner, kPreconditioners);
+    s.require(p.solver == PressureSolver::bicgstab || s.node("preconditioner") == nullptr,
+              "preconditioner", "applies only to solver = \"bicgstab\"");
     p.relaxation = s.number("relaxation", p.relaxation);
     s.require(p.relaxation > 0 && p.relaxation < 2, "relaxation",
               fmt::format("must be in (0, 2) for SOR to converge, got {}", p.relaxation));

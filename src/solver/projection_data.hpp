@@ -6,6 +6,7 @@
 #include "sluice/core/particles.hpp"
 #include "sluice/physics/ls_weight.hpp"
 #include "sluice/physics/selected_operators.hpp"
+#include "sluice/solver/block_preconditioner.hpp"
 #include "sluice/solver/halo_fields.hpp"
 #include "sluice/solver/pressure_solve.hpp"
 #include "sluice/tasks/step_graph.hpp"
@@ -32,6 +33,12 @@ struct ProjectionGroup {
     std::vector<std::uint32_t> scratch_pairs;
     physics::SelectedOperatorScratch<D> scratch_ops;
     std::array<double, 6> partial{}; // reduction partials of the last solver run, this group
+    // Block-Jacobi preconditioner (projection.preconditioner = "block_lu"): the factorised
+    // diagonal block of this group's rows, assembled after ppe_source; its scratch.
+    BlockFactor block;
+    std::vector<std::int32_t> block_index; // row of the factorised block per particle, or -1
+    std::vector<Eigen::Triplet<double>> triplets;
+    Eigen::VectorXd work;
 };
 
 // The fields the projection scheme exchanges between ranks, besides the state at the start of
@@ -99,14 +106,16 @@ private:
 
 // What a solver graph run does (set by the main thread before each run).
 enum class SolverPhase {
-    residual,  // y = x; r = bhat - A y, rhat = r; partials (r,r), (bhat,bhat), and over the
-               // fluid rows sum y, their number, the number of fluid particles on surface rows
-    bicg_dir,  // [x += omega s; r = s - omega t; partial (r,r)]; p = r + beta (p - omega v);
-               // y = p; v = A y; partial (rhat, v) [, sum of y over the fluid rows]
-    bicg_half, // s = r - alpha v; x += alpha p; y = s; t = A y;
-               // partials (t,s), (t,t), (rhat,s), (rhat,t), (s,s) [, sum of y, fluid rows]
-    sor_sweep, // y = x; Gauss-Seidel/SOR sweep inside the group, y across groups; partial r^2
-    set_zero   // x = 0 (the right-hand side vanishes)
+    residual,   // y = x; r = bhat - A y, rhat = r; partials (r,r), (bhat,bhat), and over the
+                // fluid rows sum y, their number, the number of fluid particles on surface rows
+    bicg_dir,   // [x += omega s; r = s - omega t; partial (r,r)]; p = r + beta (p - omega v);
+                // y = p; v = A y; partial (rhat, v) [, sum of y over the fluid rows]
+    bicg_half,  // s = r - alpha v; x += alpha p; y = s; t = A y;
+                // partials (t,s), (t,t), (rhat,s), (rhat,t), (s,s) [, sum of y, fluid rows]
+    sor_sweep,  // y = x; Gauss-Seidel/SOR sweep inside the group, y across groups; partial r^2
+    set_zero,   // x = 0 (the right-hand side vanishes)
+    sor_save,   // s = x (SOR's starting iterate, kept in case the sweep diverges)
+    sor_restore // x = s, y = x
 };
 
 template <int D>
@@ -124,7 +133,10 @@ struct ProjectionData {
 
     SolverPhase phase = SolverPhase::residual;
     bool first_direction = true;
+    bool preconditioned = false; // block-Jacobi (projection.preconditioner = "block_lu")
     double alpha = 0, beta = 0, omega = 0;
+    double relaxation = 1; // SOR's factor in this solve (projection.relaxation, or 1 after a
+                           // divergence of the over-relaxed sweep)
 
     // No free surface (docs/PROJECTION.md, "No free surface"): no fluid row is a Dirichlet
     // row, so A 1 = 0 and the scaled system is singular. It is then solved bordered,

@@ -31,6 +31,42 @@ void Simulation<D>::solver_stage(int stage, int group) {
     const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
     std::vector<Real>& x = P_.p;
     auto& q = G.partial;
+    const bool block =
+        d.preconditioned && (d.phase == SolverPhase::bicg_dir || d.phase == SolverPhase::bicg_half);
+    if (stage == 0 && block) {
+        // Right-preconditioned BiCGSTAB: y = M^{-1} p or M^{-1} s; x advances by the previous
+        // y of this group's rows (M^{-1} s of the last half step, M^{-1} p of this direction),
+        // which no other group changes.
+        G.work.resize(static_cast<Eigen::Index>(G.block.ready() ? G.block.size() : 0));
+        for (std::uint32_t i = lo; i < hi; ++i) {
+            Real z;
+            if (d.phase == SolverPhase::bicg_dir) {
+                if (d.first_direction) {
+                    d.dir[i] = d.r[i];
+                } else {
+                    x[i] += Real(d.omega) * d.y[i];
+                    d.r[i] = d.s[i] - Real(d.omega) * d.t[i];
+                    q[0] += d.r[i] * d.r[i];
+                    d.dir[i] = d.r[i] + Real(d.beta) * (d.dir[i] - Real(d.omega) * d.v[i]);
+                }
+                z = d.dir[i];
+            } else {
+                d.s[i] = d.r[i] - Real(d.alpha) * d.v[i];
+                x[i] += Real(d.alpha) * d.y[i];
+                z = d.s[i];
+            }
+            d.y[i] = z; // identity rows outside the factorised block
+            if (const std::int32_t b = G.block.ready() ? G.block_index[i - lo] : -1; b >= 0)
+                G.work[b] = double(z);
+        }
+        if (G.block.ready()) {
+            G.block.solve(G.work);
+            for (std::uint32_t i = lo; i < hi; ++i)
+                if (const std::int32_t b = G.block_index[i - lo]; b >= 0)
+                    d.y[i] = Real(G.work[b]);
+        }
+        return;
+    }
     if (stage == 0) {
         for (std::uint32_t i = lo; i < hi; ++i)
             switch (d.phase) {
@@ -41,6 +77,13 @@ void Simulation<D>::solver_stage(int stage, int group) {
             case SolverPhase::set_zero:
                 x[i] = 0;
                 d.y[i] = 0;
+                break;
+            case SolverPhase::sor_save:
+                d.s[i] = x[i];
+                break;
+            case SolverPhase::sor_restore:
+                x[i] = d.s[i];
+                d.y[i] = x[i];
                 break;
             case SolverPhase::bicg_dir:
                 if (d.first_direction) {
@@ -61,10 +104,11 @@ void Simulation<D>::solver_stage(int stage, int group) {
             }
         return;
     }
-    if (d.phase == SolverPhase::set_zero)
+    if (d.phase == SolverPhase::set_zero || d.phase == SolverPhase::sor_save ||
+        d.phase == SolverPhase::sor_restore)
         return;
     const bool sor = d.phase == SolverPhase::sor_sweep;
-    const Real omega = Real(cfg_.projection.relaxation);
+    const Real omega = Real(d.relaxation);
     // The bordered system's column e (lambda on the fluid rows) and row m (their sum).
     const auto lambda = Real(d.extra.y);
     const std::size_t sum_slot = d.phase == SolverPhase::bicg_half ? 5 : 2;
@@ -122,6 +166,52 @@ void Simulation<D>::solver_stage(int stage, int group) {
     }
 }
 
+// The block-Jacobi preconditioner of one group (projection.preconditioner = "block_lu" or
+// "block_ilu0"): the rows of the group's particles of A = I - [a_ij], columns of the same group
+// only, factorised.
+// Rows without an entry in the block that no other row of the block refers to (wall particles
+// away from the fluid) are identity rows that decouple: they are left out of the factorised
+// block (z_i = r_i), which is then mostly the fluid rows and the walls next to them.
+template <int D>
+void Simulation<D>::factor_block(int group) {
+    ProjectionData<D>& d = *proj_;
+    const auto gi = static_cast<std::size_t>(group);
+    ProjectionGroup<D>& G = d.groups[gi];
+    const NeighbourList<D>& list = lists_[gi];
+    const std::uint32_t lo = list.first;
+    const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
+    const auto in_block = [&](std::uint32_t i, std::uint32_t p) {
+        const std::uint32_t j = list.j[p];
+        return j >= lo && j < hi && j != i && G.a[p] != 0;
+    };
+    G.block_index.assign(hi - lo, -1);
+    for (std::uint32_t i = lo; i < hi; ++i)
+        for (std::uint32_t p = list.offset[i - lo]; p < list.offset[i - lo + 1]; ++p)
+            if (in_block(i, p)) {
+                G.block_index[i - lo] = 0;
+                G.block_index[list.j[p] - lo] = 0;
+            }
+    std::int32_t n = 0;
+    for (auto& b : G.block_index)
+        if (b == 0)
+            b = n++;
+    G.triplets.clear();
+    for (std::uint32_t i = lo; i < hi; ++i) {
+        const std::int32_t k = G.block_index[i - lo];
+        if (k < 0)
+            continue;
+        G.triplets.emplace_back(k, k, 1.0);
+        for (std::uint32_t p = list.offset[i - lo]; p < list.offset[i - lo + 1]; ++p)
+            if (in_block(i, p))
+                G.triplets.emplace_back(k, G.block_index[list.j[p] - lo], -double(G.a[p]));
+    }
+    Eigen::SparseMatrix<double> m(n, n);
+    m.setFromTriplets(G.triplets.begin(), G.triplets.end()); // duplicates (j = i) are summed
+    G.block.factor(m, cfg_.projection.preconditioner == PressurePreconditioner::block_ilu0
+                          ? BlockMethod::ilu0
+                          : BlockMethod::lu);
+}
+
 template <int D>
 std::array<double, 7> Simulation<D>::reduce_partials(int count, bool failed_here) {
     // Per group in group order, then across ranks in rank order: every rank gets the same
@@ -175,6 +265,8 @@ std::string Simulation<D>::solve_pressure(std::string& error) {
     auto& e = d.extra;
     e = {};
     d.free_level = false;
+    d.preconditioned = ps.solver == PressureSolver::bicgstab &&
+                       ps.preconditioner != PressurePreconditioner::jacobi;
     auto g = run(SolverPhase::residual, 5);
     // No fluid particle on a Dirichlet row: the level is free; the counts are exact sums.
     if (!failed && g[4] == 0 && g[3] > 0) {
@@ -286,12 +378,27 @@ std::string Simulation<D>::solve_pressure(std::string& error) {
         }
     }
     if (!failed && !converged && ps.solver == PressureSolver::sor) {
+        d.relaxation = ps.relaxation;
+        const double r0 = rnorm;
+        if (d.relaxation > 1)
+            run(SolverPhase::sor_save, 0);
         while (it < ps.max_iterations) {
             g = run(SolverPhase::sor_sweep, 1);
             if (failed)
                 break;
             ++it;
             rnorm = std::sqrt(g[0]);
+            // The hybrid sweep is Jacobi across cell groups and ranks, where over-relaxation
+            // diverges (docs/PROJECTION.md, "SOR"): once the residual has grown tenfold over
+            // the starting one, the solve starts again from its starting iterate without
+            // over-relaxation (the sweeps so far count). Decided on global sums: every rank
+            // does the same.
+            if (d.relaxation > 1 && (!std::isfinite(rnorm) || rnorm > 10 * r0)) {
+                run(SolverPhase::sor_restore, 0);
+                d.relaxation = 1;
+                rec.relaxation_dropped = true;
+                continue;
+            }
             // Hybrid SOR is not guaranteed to converge for a non-symmetric system; stop early
             // when it clearly diverges.
             if (!std::isfinite(rnorm) || rnorm > 1e6 * bnorm) {
@@ -332,6 +439,7 @@ std::string Simulation<D>::solve_pressure(std::string& error) {
 
 #define SLUICE_PROJECTION_SOLVER_MEMBERS(D)                                                        \
     template void Simulation<D>::solver_stage(int, int);                                           \
+    template void Simulation<D>::factor_block(int);                                                \
     template std::string Simulation<D>::solve_pressure(std::string&);                              \
     template std::array<double, 7> Simulation<D>::reduce_partials(int, bool);
 SLUICE_PROJECTION_SOLVER_MEMBERS(2)

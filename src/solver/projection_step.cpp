@@ -202,7 +202,7 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                     if (cfg_.projection.fluid_collision && P_.kind[j] == Kind::fluid)
                         v_i += physics::collision_velocity_change<D>(
                             P_.v[i], P_.v[j], off, d.collision_distance,
-                            physics::fluid_collision_restitution);
+                            physics::fluid_collision_restitution, Real(dt_));
                 }
                 d.number_density[i] = n;
                 // The WMLS fits and the surface test, each over its operator's neighbours
@@ -266,6 +266,9 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
                 G.a[p] = G.lap[p] / sum;
             d.bhat[i] = -src / sum;
         }
+    if (stage == 1 && cfg_.projection.solver == PressureSolver::bicgstab &&
+        cfg_.projection.preconditioner != PressurePreconditioner::jacobi)
+        factor_block(group);
 }
 
 // Stage "correct": velocity correction (P7) and position update (P8), state checks and the
@@ -312,7 +315,7 @@ void Simulation<D>::correct_stage(int group) {
                 Vec<D> offset = P_.x[list.j[p]] - P_.x[i];
                 if (list.periodic)
                     offset -= list.shift[p];
-                v = physics::wall_collision<D>(v, offset, collision);
+                v = physics::wall_collision<D>(v, offset, collision, Real(dt_));
             }
         Vec<D> x = projection_drift<D>(P_.x[i], v, Real(dt_), planes_, Real(cfg_.restitution));
         grid_.wrap(x);

@@ -309,6 +309,12 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                  "largest final relative residual {:.3e}; {:.3f} s in the solver",
                  pt->solves, static_cast<double>(pt->iterations) / static_cast<double>(pt->solves),
                  pt->max_iterations, pt->max_residual, pt->seconds);
+    if (const PressureSolveTotals* pt = sim.pressure_solve_totals();
+        pt && pt->relaxation_dropped > 0)
+        log.warn("SOR: the over-relaxed sweep diverged in {} of {} solves, which went on with "
+                 "relaxation 1 (docs/PROJECTION.md, \"SOR\"); a smaller projection.relaxation "
+                 "avoids the wasted sweeps",
+                 pt->relaxation_dropped, pt->solves);
     log.info("done: {} steps to t = {:.6g} s in {:.2f} s wall, {:.3g} particle-steps/s, {} "
              "decompositions, {} rebalances",
              result.steps, result.simulated_time, result.wall_seconds,

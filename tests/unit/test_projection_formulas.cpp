@@ -1,5 +1,8 @@
 // The projection scheme's formulas (include/sluice/physics/projection.hpp, docs/PROJECTION.md).
 #include "sluice/physics/projection.hpp"
+#include "sluice/physics/timestep.hpp"
+
+#include <cmath>
 
 #include <doctest/doctest.h>
 
@@ -75,4 +78,44 @@ TEST_CASE("number-density surface criterion") {
     CHECK(below_surface_density(0.95, 1.0, 0.97));
     CHECK_FALSE(below_surface_density(0.98, 1.0, 0.97));
     CHECK_FALSE(below_surface_density(0.1, 1.0, 0.0)); // beta = 0: off
+}
+
+TEST_CASE("collisions within the step: the distance the step would leave decides") {
+    // A pair 0.010 m apart (distance 0.008 m) closing at 3 m/s: no collision on the present
+    // distance (dt = 0), nor in a step of 0.5 ms (it closes 1.5 mm, to 8.5 mm); in a step of
+    // 1 ms it would close to 7 mm, so it collides, with the same exchange as at contact.
+    const Real d = 0.008, e = 0.2;
+    const Vec<2> off(0.010, 0), vi(2, 1), vj(-1, 0.5);
+    CHECK(collision_velocity_change<2>(vi, vj, off, d, e) == Vec<2>::Zero());
+    CHECK(collision_velocity_change<2>(vi, vj, off, d, e, 0.5e-3) == Vec<2>::Zero());
+    const Vec<2> dvi = collision_velocity_change<2>(vi, vj, off, d, e, 1e-3);
+    CHECK(dvi[0] == doctest::Approx(-1.8));
+    CHECK(dvi[1] == 0.0);
+    // Receding pairs never collide, whatever the step.
+    CHECK(collision_velocity_change<2>(vj, vi, off, d, e, 1.0) == Vec<2>::Zero());
+    // The wall: 10 mm away, approaching at 2 m/s: 4 mm in 2 ms reaches the distance.
+    const Vec<2> wall(0.010, 0);
+    CHECK(wall_collision<2>(Vec<2>(2, 1), wall, d, 0.5e-3) == Vec<2>(2, 1));
+    const Vec<2> v = wall_collision<2>(Vec<2>(2, 1), wall, d, 2e-3);
+    CHECK(v[0] == doctest::Approx(0));
+    CHECK(v[1] == doctest::Approx(1));
+    CHECK(wall_collision<2>(Vec<2>(-2, 1), wall, d, 1.0) == Vec<2>(-2, 1));
+}
+
+TEST_CASE("time step of the incompressible scheme: flow speed, force and viscosity, no sound") {
+    // The projection dam break (dx = 0.01 m, h = 1.0333 dx, nu = 1e-6 m^2/s, c0 = 28 m/s in
+    // the case file): the CFL limit sees |v| only, 0.25 h / |v|.
+    const double h = 0.010333, nu = 1e-6, g = 9.81, c0 = 28;
+    const TimeStepParams prm{h, nu, 0.25, 0.125, 0.25};
+    const TimeStepLimits rest = particle_time_step(prm, cfl_sound_speed(true, c0), 0.0, g);
+    CHECK(std::isinf(rest.acoustic)); // at rest only gravity and viscosity limit the step
+    CHECK(rest.force == doctest::Approx(0.25 * std::sqrt(h / g)));
+    CHECK(rest.viscous == doctest::Approx(0.125 * h * h / nu));
+    CHECK(rest.min() == rest.force); // 8.1 ms
+    const TimeStepLimits flow = particle_time_step(prm, cfl_sound_speed(true, c0), 4.0, g);
+    CHECK(flow.acoustic == doctest::Approx(0.25 * h / 4.0)); // 0.65 ms at the surge's 4 m/s
+    CHECK(flow.min() == flow.acoustic);
+    // WCSPH at the same speed: the sound speed enters, (c0 + |v|) / |v| = 8 times smaller.
+    const TimeStepLimits wcsph = particle_time_step(prm, cfl_sound_speed(false, c0), 4.0, g);
+    CHECK(flow.acoustic / wcsph.acoustic == doctest::Approx((c0 + 4.0) / 4.0));
 }

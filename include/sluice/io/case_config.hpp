@@ -27,6 +27,9 @@ using Triple = std::array<double, 3>;
 // operators; docs/PROJECTION.md).
 enum class Scheme { wcsph, projection };
 enum class PressureSolver { bicgstab, sor };
+// Preconditioner of the projection scheme's BiCGSTAB (docs/PROJECTION.md, "Preconditioner"):
+// the row scaling alone, or block-Jacobi with an LU or ILU(0) factorisation per cell group.
+enum class PressurePreconditioner { jacobi, block_lu, block_ilu0 };
 // Gradient of the projection scheme's velocity correction (docs/PROJECTION.md, P7).
 enum class CorrectionGradient { second_order, first_order };
 enum class DensityScheme { summation, continuity };
@@ -120,6 +123,7 @@ struct ProjectionSettings {
     PressureSolver solver = PressureSolver::bicgstab;
     double tolerance = 1e-8; // relative residual of the row-scaled system
     int max_iterations = 1000;
+    PressurePreconditioner preconditioner = PressurePreconditioner::block_ilu0;
     double relaxation = 1.5; // SOR relaxation factor (seed 004: 1.5)
     double gamma = 0.01;     // relaxation of the density-deviation source term (seed 004: <= 1)
     double surface_diameter_over_dx = 2.1; // Dilts arc circle (seed 004: 2.1 l0)

@@ -86,16 +86,25 @@ Vec<D> corrected_velocity(const Vec<D>& u_star, const Vec<D>& grad_p, Real rho0,
 // negative and is not applied (P7), so nothing else keeps a splashing particle out of a wall.
 // A fluid particle closer than `distance` to a wall particle and moving towards it loses the
 // approaching component of its velocity (restitution 0). offset: x_wall - x_fluid.
+// With a varying time step the test is on the distance the step would leave (docs/PROJECTION.md,
+// "Collisions and the time step"): the pair collides when r - dt (v.e) < distance, i.e. when it
+// is already closer than `distance` or the step of length dt would bring it there; dt = 0 is
+// the test on the present distance alone.
 inline constexpr Real wall_collision_distance_over_dx = Real(0.8);
 
+// Whether a pair r apart that approaches at `approach` (> 0: closing) collides in a step dt.
+inline bool collides(Real r, Real approach, Real distance, Real dt) {
+    return r > 0 && approach > 0 && r - dt * approach < distance;
+}
+
 template <int D>
-Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance) {
+Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance, Real dt = 0) {
     const Real r = offset.norm();
-    if (r >= distance || r == 0)
+    if (r >= distance + dt * v.norm() || r == 0)
         return v;
     const Vec<D> e = offset / r;
     const Real approach = v.dot(e);
-    return approach > 0 ? Vec<D>(v - approach * e) : v;
+    return collides(r, approach, distance, dt) ? Vec<D>(v - approach * e) : v;
 }
 
 // Fluid-fluid collision (Koshizuka et al. 1998's collision model, as used in MPS codes for
@@ -110,13 +119,14 @@ inline constexpr Real fluid_collision_restitution = Real(0.2);
 
 template <int D>
 Vec<D> collision_velocity_change(const Vec<D>& v_i, const Vec<D>& v_j, const Vec<D>& offset,
-                                 Real distance, Real restitution) {
+                                 Real distance, Real restitution, Real dt = 0) {
     const Real r = offset.norm();
-    if (r >= distance || r == 0)
+    if (r >= distance + dt * (v_i - v_j).norm() || r == 0)
         return Vec<D>::Zero();
     const Vec<D> e = offset / r;
     const Real approach = (v_i - v_j).dot(e);
-    return approach > 0 ? Vec<D>(-(1 + restitution) / 2 * approach * e) : Vec<D>::Zero();
+    return collides(r, approach, distance, dt) ? Vec<D>(-(1 + restitution) / 2 * approach * e)
+                                               : Vec<D>::Zero();
 }
 
 // Number-density surface criterion (Koshizuka & Oka 1996, MPS): a particle whose number

@@ -14,6 +14,8 @@ struct PressureSolveRecord {
     // fluid row that made the singular system compatible (docs/PROJECTION.md, "No free
     // surface"), in Pa; 0 when a free surface fixes the pressure level.
     double source_shift = 0;
+    // SOR: the over-relaxed sweep diverged and the solve went on with relaxation 1.
+    bool relaxation_dropped = false;
 };
 
 struct PressureSolveTotals {
@@ -22,12 +24,14 @@ struct PressureSolveTotals {
     int max_iterations = 0;
     double max_residual = 0;
     double seconds = 0;
+    long relaxation_dropped = 0; // SOR solves that went on with relaxation 1
     void add(const PressureSolveRecord& r) {
         ++solves;
         iterations += r.iterations;
         max_iterations = std::max(max_iterations, r.iterations);
         max_residual = std::max(max_residual, r.residual);
         seconds += r.seconds;
+        relaxation_dropped += r.relaxation_dropped ? 1 : 0;
     }
 };
 

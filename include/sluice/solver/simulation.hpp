@@ -188,6 +188,7 @@ private:
     template <class K>
     void projection_stage(const K& kernel, int stage, int group);
     void solver_stage(int stage, int group);
+    void factor_block(int group); // block-Jacobi preconditioner of the group (after ppe_source)
     void correct_stage(int group);
     std::string solve_pressure(std::string& error); // non-empty: did not converge
     std::array<double, 7> reduce_partials(int count, bool failed_here);
