@@ -12,10 +12,11 @@ the pressure solver's mean and largest iterations per step (rank log), and the C
 to the WCSPH run of the same round. CPU time is the figure to compare on a loaded machine (one
 worker thread: wall time also counts the time the process waited for a core).
 
-Variants (projection): "adaptive" (the case as shipped: adaptive dt, block-LU
-preconditioner), "fixed" (numerics.dt = 2e-4, the case's old fixed step), "jacobi" (adaptive
-dt, projection.preconditioner = "jacobi"), "fixed-jacobi" (both old settings: the scheme as it
-was before issue 22).
+Variants (projection): "adaptive" (the case as shipped: adaptive dt, the default Jacobi
+preconditioner), "ilu0" (adaptive dt, projection.preconditioner = "block_ilu0"), "fixed"
+(numerics.dt = 2e-4, the case's old fixed step), "jacobi" (adaptive dt, the Jacobi
+preconditioner named), "fixed-jacobi" (both old settings: the scheme as it was before
+issue 22).
 
 Usage: perf/projection/time_to_solution.py [--dx 0.01] [--end 1.0] [--rounds 1]
            [--variants adaptive,fixed,jacobi,fixed-jacobi] [--threads 1] [--sluice PATH]
@@ -41,6 +42,7 @@ A, G = 0.4, 9.81  # column width [m], gravity
 
 VARIANTS = {
     "adaptive": [],
+    "ilu0": ['projection.preconditioner="block_ilu0"'],
     "fixed": ["numerics.dt=2.0e-4"],
     "jacobi": ['projection.preconditioner="jacobi"'],
     "fixed-jacobi": ["numerics.dt=2.0e-4", 'projection.preconditioner="jacobi"'],
@@ -77,7 +79,7 @@ def main() -> None:
     ap.add_argument("--end", type=float, default=1.0, help="simulated time [s]")
     ap.add_argument("--rounds", type=int, default=1)
     ap.add_argument("--threads", type=int, default=1)
-    ap.add_argument("--variants", default="adaptive,fixed-jacobi")
+    ap.add_argument("--variants", default="adaptive,ilu0,fixed-jacobi")
     ap.add_argument("--sluice", default=str(sr.DEFAULT_SLUICE), help="binary of the projection runs")
     ap.add_argument("--wcsph-sluice", help="binary of the WCSPH runs (default: --sluice)")
     ap.add_argument("--out", help="keep the runs' results here (default: a temporary folder)")

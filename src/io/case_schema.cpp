@@ -119,7 +119,7 @@ const KeySpec kKeys[] = {
      "Stop when ‖b̂ − Âp‖₂ ≤ tolerance·‖b̂‖₂ for the row-scaled system (units of pressure; docs/PROJECTION.md, P4); in (0, 1)."},
     {"projection", "max_iterations", "integer", "", "1000", "[1, 1000000]", Applies::projection, "",
      "BiCGSTAB iterations (two operator products each) or SOR sweeps per step; a solve that has not converged by then stops the run with exit code 3 and a message naming the solver, the residual and these keys."},
-    {"projection", "preconditioner", "string", "", "\"block_ilu0\"", "\"jacobi\", \"block_ilu0\", \"block_lu\"", Applies::projection, "projection.solver = \"bicgstab\"",
+    {"projection", "preconditioner", "string", "", "\"jacobi\"", "\"jacobi\", \"block_ilu0\", \"block_lu\"", Applies::projection, "projection.solver = \"bicgstab\"",
      "Preconditioner of BiCGSTAB: \"jacobi\" (the row scaling alone), \"block_ilu0\" (block-Jacobi: ILU(0) of each cell group's diagonal block, couplings to other groups and ranks dropped) or \"block_lu\" (the same blocks, exact sparse LU); docs/PROJECTION.md, \"Preconditioner\"; only with solver = \"bicgstab\"."},
     {"projection", "relaxation", "number", "", "1.5", "(0, 2)", Applies::projection, "projection.solver = \"sor\"",
      "SOR relaxation factor (seed 004: 1.5); in (0, 2); only with solver = \"sor\"."},
