@@ -32,6 +32,24 @@ struct HydrostaticCorner {
     }
 };
 
+// The 3-D analogue: water H = 0.3 m deep in x in [0, 0.2], y >= 0, over walls at y < 0 and
+// z < 0 (three layers each), dx = 0.02, hydrostatic pressure everywhere.
+struct HydrostaticCorner3 {
+    Real dx = 0.02, H = 0.3;
+    Particles<3> P;
+    HydrostaticCorner3() {
+        for (int k = -3; k < 15; ++k)
+            for (int j = -3; j < 10; ++j)
+                for (int i = 0; i < 10; ++i) {
+                    const Vec<3> x((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx);
+                    const bool wall = j < 0 || k < 0;
+                    P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<3>::Zero(), kRho,
+                                kRho * dx * dx * dx);
+                    P.p.back() = kRho * kG * (H - x[2]);
+                }
+    }
+};
+
 // The pair terms of a case with dummy walls: no clipping below zero pressure, no viscosity.
 template <int D>
 WallLoadParams<D> inviscid(Real h) {
@@ -127,17 +145,9 @@ TEST_CASE("force sensor reads no suction where the wall pairs clip at the floor 
 }
 
 TEST_CASE("force sensor in 3-D averages its disc") {
-    const Real dx = 0.02, H = 0.3;
-    Particles<3> P;
-    for (int k = -3; k < 15; ++k)
-        for (int j = -3; j < 10; ++j)
-            for (int i = 0; i < 10; ++i) {
-                const Vec<3> x((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx);
-                const bool wall = j < 0 || k < 0;
-                P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<3>::Zero(), kRho,
-                            kRho * dx * dx * dx);
-                P.p.back() = kRho * kG * (H - x[2]);
-            }
+    const HydrostaticCorner3 t;
+    const Real dx = t.dx, H = t.H;
+    const Particles<3>& P = t.P;
     const AnyKernel<3> kernel = make_kernel<3>(KernelType::wendland_c2, Real(1.5) * dx);
     // A disc on the y = 0 wall centred at z = 0.15, symmetric about its centre.
     const SensorFace<3> face{Vec<3>(Real(0.1), 0, Real(0.15)), 1, -1, Real(0.06)};
@@ -146,18 +156,9 @@ TEST_CASE("force sensor in 3-D averages its disc") {
 }
 
 TEST_CASE("interpolated sensor on a hydrostatic side wall reads rho g (H - y)") {
-    // Water 0.5 m deep against a wall at x = 0 (x < 0: 4 layers of wall particles carrying the
-    // Adami pressure of a hydrostatic field, which is rho g (H - y) itself).
-    const Real dx = 0.01, H = 0.5;
-    Particles<2> P;
-    for (int j = -4; j < 50; ++j)
-        for (int i = -4; i < 30; ++i) {
-            const Vec<2> x((i + 0.5) * dx, (j + 0.5) * dx);
-            const bool wall = i < 0 || j < 0;
-            P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<2>::Zero(), kRho,
-                        kRho * dx * dx);
-            P.p.back() = kRho * kG * (H - x[1]);
-        }
+    const HydrostaticCorner t;
+    const Real dx = t.dx, H = t.H;
+    const Particles<2>& P = t.P;
     const AnyKernel<2> kernel = make_kernel<2>(KernelType::wendland_c2, Real(1.5) * dx);
     for (Real y : {Real(0.1), Real(0.25), Real(0.4)})
         for (Real d : {Real(0), Real(0.005), Real(0.05)}) {
@@ -177,17 +178,9 @@ TEST_CASE("interpolated sensor on a hydrostatic side wall reads rho g (H - y)") 
 }
 
 TEST_CASE("interpolated sensor in 3-D averages over its disc") {
-    const Real dx = 0.02, H = 0.3;
-    Particles<3> P;
-    for (int k = -3; k < 15; ++k)
-        for (int j = -3; j < 10; ++j)
-            for (int i = 0; i < 10; ++i) {
-                const Vec<3> x((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx);
-                const bool wall = j < 0 || k < 0;
-                P.push_back(P.size(), wall ? Kind::wall : Kind::fluid, x, Vec<3>::Zero(), kRho,
-                            kRho * dx * dx * dx);
-                P.p.back() = kRho * kG * (H - x[2]);
-            }
+    const HydrostaticCorner3 t;
+    const Real dx = t.dx, H = t.H;
+    const Particles<3>& P = t.P;
     const AnyKernel<3> kernel = make_kernel<3>(KernelType::wendland_c2, Real(1.5) * dx);
     // A sensor on the y = 0 wall, centre at z = 0.15: the disc is symmetric about its centre,
     // so a linear field averages to the centre's value.
