@@ -65,30 +65,8 @@ run() { # case out ranks args...
     fi
 }
 
-compare() { # one three label case
-    /usr/bin/python3 - "$@" <<'PY'
-import glob, os, sys, tomllib
-import h5py, numpy as np
-one, three, label, case = sys.argv[1:5]
-cfg = tomllib.load(open(case, "rb"))
-g = np.linalg.norm(cfg["fluid"].get("gravity", [0, -9.81]))
-H = cfg["domain"]["hi"][-1] - cfg["domain"]["lo"][-1]
-scale = cfg["fluid"]["rho0"] * max(g, 1.0) * H
-snaps = sorted(glob.glob(os.path.join(one, "snapshots", "*.h5")))
-assert len(snaps) >= 2, snaps
-worst_p = worst_x = 0.0
-for f in snaps:
-    a = h5py.File(f, "r")
-    b = h5py.File(os.path.join(three, "snapshots", os.path.basename(f)), "r")
-    ia, ib = np.argsort(a["id"][:]), np.argsort(b["id"][:])
-    assert np.array_equal(a["id"][:][ia], b["id"][:][ib]), "different particles"
-    worst_p = max(worst_p, np.abs(a["pressure"][:][ia] - b["pressure"][:][ib]).max() / scale)
-    worst_x = max(worst_x, np.abs(a["position"][:][ia] - b["position"][:][ib]).max())
-print(f"{label}: 1 vs 3 ranks over {len(snaps)} snapshots: max |dp| / (rho0 g H) = "
-      f"{worst_p:.2e}, max |dx| = {worst_x:.2e} m")
-assert worst_p < 1e-6, worst_p
-assert worst_x < 1e-9, worst_x
-PY
+compare() { # one three label scale (Pa, or a case file: its rho0 g H)
+    /usr/bin/python3 "$src/tests/mpi/lib/compare_layouts.py" "$@" 2
 }
 
 # Coarse spacing per case (the Poiseuille channel keeps its own: its periodic axis needs three
