@@ -23,7 +23,7 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "perf" / "lib"))
 sys.path.insert(0, str(ROOT / "perf" / "projection"))
 import sluice_run as sr  # noqa: E402
-from dam_break_compare import A, G, martin_moyce, read_probe  # noqa: E402
+from dam_break_compare import A, G, front_rms, read_probe  # noqa: E402
 
 HULL = '"convex-hull"'
 POLICIES = {
@@ -44,7 +44,6 @@ def main() -> None:
     ap.add_argument("--out", help="keep the runs here (default: a temporary folder)")
     args = ap.parse_args()
     sluice = sr.ensure_binary(sr.DEFAULT_SLUICE)
-    exp = martin_moyce()
     t_scale = math.sqrt(2 * G / A)
     print(f"projection dam break, dx = {args.dx} m, to t = {args.end} s; {sr.machine_description()}")
     print(f"{'neighbours':20s} {'result':>8s} {'steps':>6s} {'front RMS':>9s} {'iter/step':>9s} "
@@ -61,8 +60,7 @@ def main() -> None:
             s = json.load(open(summary)) if summary.exists() else {}
             front = read_probe(out / "probes" / "front.csv")
             T, Z = front[:, 0] * t_scale, front[:, 1] / A
-            rel = [(np.interp(t, T, Z) - z) / z for t, z in exp if t <= min(3.0, T[-1])]
-            rms = math.sqrt(sum(r * r for r in rel) / max(len(rel), 1))
+            rms = front_rms(T, Z)[0]
             log = (out / "logs" / "rank_0.log").read_text()
             line = next((ln for ln in log.splitlines() if "pressure solves:" in ln), "")
             iters = line.split("steps, ")[1].split(" iterations")[0] if "steps, " in line else "?"

@@ -46,6 +46,13 @@ def martin_moyce() -> list[tuple[float, float]]:
     return rows
 
 
+def front_rms(T: np.ndarray, Z: np.ndarray) -> tuple[float, int]:
+    """RMS relative deviation of a front Z(T) (T = t sqrt(2g/A), Z = x/A) from Martin & Moyce
+    over T <= 3 (and the run's end), and the number of experimental points it used."""
+    rel = [(np.interp(t, T, Z) - z) / z for t, z in martin_moyce() if t <= 3.0 and t <= T[-1]]
+    return (math.sqrt(sum(r * r for r in rel) / len(rel)) if rel else float("nan")), len(rel)
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--end", type=float, default=1.0, help="simulated time [s]")
@@ -74,13 +81,12 @@ def main() -> None:
             front = read_probe(out / "probes" / "front.csv")
             press = read_probe(out / "probes" / "p2_right_wall.csv")
             T, Z = front[:, 0] * T_scale, front[:, 1] / A
-            rel = [(np.interp(t, T, Z) - z) / z for t, z in exp if t <= 3.0 and t <= T[-1]]
-            rms = math.sqrt(sum(r * r for r in rel) / len(rel))
+            rms, points = front_rms(T, Z)
             s = json.load(open(out / "summary.json"))
             wall, steps = s.get("wall_seconds", float("nan")), s.get("steps", 0)
             p = np.nan_to_num(press[:, 1])
             k = int(np.argmax(p))
-            print(f"{label:10s} front RMS deviation from Martin & Moyce (T <= 3, {len(rel)} "
+            print(f"{label:10s} front RMS deviation from Martin & Moyce (T <= 3, {points} "
                   f"points) {100 * rms:.1f} %; P2 peak {p[k]:.0f} Pa at t = {press[k, 0]:.3f} s; "
                   f"{steps} steps, {wall:.1f} s wall, {1e3 * wall / max(steps, 1):.2f} ms/step")
             if case.startswith("projection"):

@@ -25,7 +25,6 @@ Usage: perf/projection/time_to_solution.py [--dx 0.01] [--end 1.0] [--rounds 1]
 from __future__ import annotations
 
 import argparse
-import csv
 import math
 import re
 import sys
@@ -38,7 +37,10 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "perf" / "lib"))
 import sluice_run as sr  # noqa: E402
 
-A, G = 0.4, 9.81  # column width [m], gravity
+sys.path.insert(0, str(ROOT / "perf" / "projection"))
+import dam_break_compare as dbc  # noqa: E402
+
+A, G = dbc.A, dbc.G
 
 VARIANTS = {
     "adaptive": [],
@@ -49,21 +51,9 @@ VARIANTS = {
 }
 
 
-def martin_moyce() -> list[tuple[float, float]]:
-    rows = []
-    with open(ROOT / "tests" / "data" / "martin_moyce_1952_n2_2.csv") as f:
-        for r in csv.reader(line for line in f if not line.startswith("#")):
-            if r[0] == "case":
-                continue
-            rows.append((float(r[1]), float(r[2])))
-    return rows
-
-
 def front_rms(out: Path) -> float:
     front = np.loadtxt(out / "probes" / "front.csv", delimiter=",", skiprows=1, ndmin=2)
-    T, Z = front[:, 0] * math.sqrt(2 * G / A), front[:, 1] / A
-    rel = [(np.interp(t, T, Z) - z) / z for t, z in martin_moyce() if t <= 3.0 and t <= T[-1]]
-    return math.sqrt(sum(r * r for r in rel) / len(rel)) if rel else float("nan")
+    return dbc.front_rms(front[:, 0] * math.sqrt(2 * G / A), front[:, 1] / A)[0]
 
 
 def solver_line(out: Path) -> tuple[float, int]:
