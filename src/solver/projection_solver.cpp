@@ -31,13 +31,14 @@ void Simulation<D>::solver_stage(int stage, int group) {
     const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
     std::vector<Real>& x = P_.p;
     auto& q = G.partial;
-    const bool block =
-        d.preconditioned && (d.phase == SolverPhase::bicg_dir || d.phase == SolverPhase::bicg_half);
-    if (stage == 0 && block) {
+    const bool bicg = d.phase == SolverPhase::bicg_dir || d.phase == SolverPhase::bicg_half;
+    if (stage == 0 && bicg) {
         // Right-preconditioned BiCGSTAB: y = M^{-1} p or M^{-1} s; x advances by the previous
         // y of this group's rows (M^{-1} s of the last half step, M^{-1} p of this direction),
-        // which no other group changes.
-        G.work.resize(static_cast<Eigen::Index>(G.block.ready() ? G.block.size() : 0));
+        // which no other group changes. Without a block (Jacobi: the scaling is in the
+        // operator) M is the identity and y is p or s itself.
+        const bool solve = d.preconditioned && G.block.ready();
+        G.work.resize(static_cast<Eigen::Index>(solve ? G.block.size() : 0));
         for (std::uint32_t i = lo; i < hi; ++i) {
             Real z;
             if (d.phase == SolverPhase::bicg_dir) {
@@ -56,10 +57,10 @@ void Simulation<D>::solver_stage(int stage, int group) {
                 z = d.s[i];
             }
             d.y[i] = z; // identity rows outside the factorised block
-            if (const std::int32_t b = G.block.ready() ? G.block_index[i - lo] : -1; b >= 0)
+            if (const std::int32_t b = solve ? G.block_index[i - lo] : -1; b >= 0)
                 G.work[b] = double(z);
         }
-        if (G.block.ready()) {
+        if (solve) {
             G.block.solve(G.work);
             for (std::uint32_t i = lo; i < hi; ++i)
                 if (const std::int32_t b = G.block_index[i - lo]; b >= 0)
@@ -85,21 +86,7 @@ void Simulation<D>::solver_stage(int stage, int group) {
                 x[i] = d.s[i];
                 d.y[i] = x[i];
                 break;
-            case SolverPhase::bicg_dir:
-                if (d.first_direction) {
-                    d.dir[i] = d.r[i];
-                } else {
-                    x[i] += Real(d.omega) * d.s[i];
-                    d.r[i] = d.s[i] - Real(d.omega) * d.t[i];
-                    q[0] += d.r[i] * d.r[i];
-                    d.dir[i] = d.r[i] + Real(d.beta) * (d.dir[i] - Real(d.omega) * d.v[i]);
-                }
-                d.y[i] = d.dir[i];
-                break;
-            case SolverPhase::bicg_half:
-                d.s[i] = d.r[i] - Real(d.alpha) * d.v[i];
-                x[i] += Real(d.alpha) * d.dir[i];
-                d.y[i] = d.s[i];
+            default: // bicg_dir, bicg_half: above
                 break;
             }
         return;
