@@ -24,12 +24,7 @@ sets=(--set particles.dx=0.02 --set time.end_time=0.1 --set time.output_interval
 run() { # ranks args...
     local ranks=$1
     shift
-    if [[ $ranks == 1 ]]; then
-        timeout 120 "$exe" run "$case_file" "$@" "${sets[@]}"
-    else
-        timeout 120 "$mpiexec" --oversubscribe -np "$ranks" "$exe" run "$case_file" "$@" \
-            "${sets[@]}"
-    fi
+    SLUICE_TIMEOUT=120 sluice_on "$ranks" run "$case_file" "$@" "${sets[@]}"
 }
 
 particle_sets=(id kind x x_ref v v_half a rho mass p probe_next probe_bytes snapshot_time

@@ -58,11 +58,7 @@ PY
 run() { # case out ranks args...
     local case=$1 out=$2 ranks=$3
     shift 3
-    if [[ $ranks == 1 ]]; then
-        "$exe" run "$case" --out "$out" --threads 1 -q "$@"
-    else
-        "$mpiexec" --oversubscribe -np "$ranks" "$exe" run "$case" --out "$out" --threads 1 -q "$@"
-    fi
+    sluice_on "$ranks" run "$case" --out "$out" --threads 1 -q "$@"
 }
 
 compare() { # one three label scale (Pa, or a case file: its rho0 g H)

@@ -16,11 +16,7 @@ case=$src/cases/projection_hydrostatic_2d.toml
 run() { # out ranks args...
     local out=$1 ranks=$2
     shift 2
-    if [[ $ranks == 1 ]]; then
-        "$exe" run "$case" --out "$out" --threads 1 -q "$@"
-    else
-        "$mpiexec" --oversubscribe -np "$ranks" "$exe" run "$case" --out "$out" --threads 1 -q "$@"
-    fi
+    sluice_on "$ranks" run "$case" --out "$out" --threads 1 -q "$@"
 }
 
 compare() { # one three label scale (Pa, or a case file: its rho0 g H)

@@ -14,12 +14,7 @@ run() { # name ranks threads case args...
     shift 4
     local out="$work/$name/${ranks}x${threads}"
     [[ $case == */* ]] && case="$src/$case" || case="$src/cases/$case" # tests/data/... or cases/
-    if [[ $ranks == 1 ]]; then
-        "$exe" run "$case" --out "$out" --threads "$threads" -q "$@"
-    else
-        "$mpiexec" --oversubscribe -np "$ranks" "$exe" run "$case" --out "$out" \
-            --threads "$threads" -q "$@"
-    fi
+    sluice_on "$ranks" run "$case" --out "$out" --threads "$threads" -q "$@"
 }
 
 check_case() { # name case args...
