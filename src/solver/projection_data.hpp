@@ -133,7 +133,7 @@ struct ProjectionData {
 
     SolverPhase phase = SolverPhase::residual;
     bool first_direction = true;
-    bool preconditioned = false; // block-Jacobi (projection.preconditioner = "block_lu")
+    bool preconditioned = false; // block-Jacobi: "block_ilu0" or "block_lu" with BiCGSTAB
     double alpha = 0, beta = 0, omega = 0;
     double relaxation = 1; // SOR's factor in this solve (projection.relaxation, or 1 after a
                            // divergence of the over-relaxed sweep)
