@@ -241,7 +241,15 @@ void read_probes(const Section& root, CaseConfig& c) {
                     p.diameter <= kMaxCoordinate, "diameter",
                     fmt::format("must be at most {:g} m, got {}", kMaxCoordinate, p.diameter));
                 read_sensor_wall(s, c, p);
-                p.reading = s.choice("reading", SensorReading::force, kSensorReadings);
+                // The force reading sums the WCSPH momentum equation's fluid-wall pair forces;
+                // the projection scheme applies no such forces, so it interpolates.
+                const bool wcsph = c.scheme == Scheme::wcsph;
+                p.reading =
+                    s.choice("reading", wcsph ? SensorReading::force : SensorReading::interpolated,
+                             kSensorReadings);
+                s.require(wcsph || p.reading != SensorReading::force, "reading",
+                          "the force reading sums the pair forces of the WCSPH momentum "
+                          "equation; the projection scheme has none (use \"interpolated\")");
             } else {
                 s.require(s.node("reading") == nullptr, "reading",
                           "only an area sensor (with a diameter) has a reading; a point probe "

@@ -178,7 +178,7 @@ const KeySpec kKeys[] = {
     {"probes", "diameter", "number", "m", "point probe", "(0, 1e6]", Applies::any, "type = \"pressure\"",
      "pressure only: an area sensor (flush-mounted transducer) of this diameter; > 0."},
     {"probes", "reading", "string", "", "\"force\"", "\"force\", \"interpolated\"", Applies::any, "type = \"pressure\", with a diameter",
-     "area sensor only: \"force\", the fluid's normal force on the wall under the face per unit area; \"interpolated\", the pressure interpolated on the face."},
+     "area sensor only: \"force\", the fluid's normal force on the wall under the face per unit area; \"interpolated\", the pressure interpolated on the face (the default, and the only reading, under the projection scheme)."},
     {"probes", "face", "string", "", "–", "\"x-\", \"x+\", \"y-\", \"y+\", \"z-\", \"z+\"", Applies::any, "type = \"force\" | \"pressure\"",
      "force: the tank face loaded (\"x-\", \"x+\", …; must be in walls.tank_faces)."},
     {"probes", "box", "integer", "", "–", "a walls.boxes index", Applies::any, "type = \"force\" | \"pressure\"",
