@@ -114,6 +114,9 @@ def plan_runs(a, case: dict) -> list[dict]:
                                          "time.end_time": a.end_time}
                 probes = {}
                 for i, p in pressure:
+                    if "diameter" in p:  # an area sensor lies on the wall's surface at any dx
+                        probes[p["name"]] = {"index": i, "position": list(p["position"])}
+                        continue
                     pos = [round(x_wall - 0.5 * dx, 10), float(p["position"][1])]
                     ov[f"probes.{i}.position"] = pos
                     probes[p["name"]] = {"index": i, "position": pos}
@@ -127,7 +130,7 @@ def plan_runs(a, case: dict) -> list[dict]:
                 dx_run = float(ov["particles.dx"])
                 c0 = float(ov["fluid.sound_speed"])
                 for name, rec in probes.items():
-                    rec["position"] = list(ov[f"probes.{rec['index']}.position"])
+                    rec["position"] = list(ov.get(f"probes.{rec['index']}.position", rec["position"]))
                 label = f"H{sc.H / dx:g}_c{k:g}" + ("" if jitter is None else f"_j{jitter:g}")
                 n_part = area / dx**2 + 3 * perimeter / dx
                 dt = float(num.get("cfl", 0.25)) * float(num.get("h_over_dx", 1.5)) * dx / c0
@@ -166,11 +169,17 @@ def reusable(run: dict) -> bool:
 
 def do_run(run: dict, a) -> dict:
     t0 = time.time()
-    r = sr.run_sluice(a.sluice, a.case, run["out_dir"], a.threads, run["overrides"],
+    case_file = a.case
+    if run["overrides"].get("numerics.scheme") == "projection":
+        # the projection scheme refuses the WCSPH-only keys (delta_sph, artificial viscosity...)
+        # (beside the run folder: run_sluice empties the run folder first)
+        run["out_dir"].parent.mkdir(parents=True, exist_ok=True)
+        case_file = sr.projection_case(a.sluice, a.case, run["out_dir"].parent)
+    r = sr.run_sluice(a.sluice, case_file, run["out_dir"], a.threads, run["overrides"],
                       nice=a.nice, echo=True)
     rec = {k: run[k] for k in ("variant", "label", "dx", "c0", "c0_factor", "end_time",
                                "probes", "scales")}
-    rec.update({"overrides": _canon(run["overrides"]), "case": str(a.case),
+    rec.update({"overrides": _canon(run["overrides"]), "case": str(case_file),
                 "sluice": str(a.sluice), "threads": a.threads, "returncode": r.returncode,
                 "process_wall_s": r.process_wall_s, "cpu_s": r.cpu_s,
                 "peak_rss_bytes": r.peak_rss_bytes, "stderr_tail": r.stderr_tail,

@@ -120,6 +120,27 @@ def run_sluice(sluice: Path, case: Path, out_dir: Path, threads: int,
                summary=summary, stderr_tail="\n".join(err.strip().splitlines()[-5:]))
 
 
+def projection_case(sluice: Path, case_file: Path, out_dir: Path) -> Path:
+    """The case without the keys the projection scheme refuses (those `sluice schema` marks as
+    WCSPH's, e.g. numerics.delta_sph), for the projection variant; the case itself when the
+    binary has no `schema` command."""
+    r = subprocess.run([str(sluice), "schema"], capture_output=True, text=True)
+    if r.returncode != 0:
+        return case_file
+    drop = {(k["table"], k["key"]) for k in json.loads(r.stdout) if k["applies"] == "wcsph"}
+    table, kept = "", []
+    for line in case_file.read_text().splitlines(keepends=True):
+        s = line.strip()
+        if s.startswith("["):
+            table = s.split("#")[0].strip().strip("[]").strip()
+        elif "=" in s and not s.startswith("#") and (table, s.split("=")[0].strip()) in drop:
+            continue
+        kept.append(line)
+    out = out_dir / f"{case_file.stem}_projection.toml"
+    out.write_text("".join(kept))
+    return out
+
+
 def machine_description() -> str:
     """CPU model, core count and load at the time of the call (for the record)."""
     model = "unknown CPU"

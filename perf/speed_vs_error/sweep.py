@@ -84,27 +84,6 @@ def resolution_overrides(name: str, case: dict, dx: float) -> dict:
     return o
 
 
-def projection_case(sluice: Path, case_file: Path, out_dir: Path) -> Path:
-    """The case without the keys the projection scheme refuses (those `sluice schema` marks as
-    WCSPH's, e.g. numerics.delta_sph), for the projection variant; the case itself when the
-    binary has no `schema` command."""
-    r = subprocess.run([str(sluice), "schema"], capture_output=True, text=True)
-    if r.returncode != 0:
-        return case_file
-    drop = {(k["table"], k["key"]) for k in json.loads(r.stdout) if k["applies"] == "wcsph"}
-    table, kept = "", []
-    for line in case_file.read_text().splitlines(keepends=True):
-        s = line.strip()
-        if s.startswith("["):
-            table = s.split("#")[0].strip().strip("[]").strip()
-        elif "=" in s and not s.startswith("#") and (table, s.split("=")[0].strip()) in drop:
-            continue
-        kept.append(line)
-    out = out_dir / f"{case_file.stem}_projection.toml"
-    out.write_text("".join(kept))
-    return out
-
-
 def projection_available(sluice: Path, case_file: Path) -> bool:
     """True once the solver accepts numerics.scheme = "projection" (the WCSPH-vs-projection
     comparison of issue 6): asked of `sluice info`, which validates without running."""
@@ -249,7 +228,7 @@ def main() -> int:
         case_file = sr.ROOT / spec["file"]
         base = sr.read_case(case_file)
         evaluator, measure = evaluate.EVALUATORS[name]
-        proj_file = projection_case(sluice, case_file, args.out)
+        proj_file = sr.projection_case(sluice, case_file, args.out)
         proj = projection_available(sluice, proj_file)
         print(f"\n-- {name} ({spec['file']}): {measure}"
               + ("" if proj else "; projection scheme not offered by this build, skipped"))
