@@ -100,13 +100,18 @@ def plan_runs(a, case: dict) -> list[dict]:
     sc = analyse._case_scales(case)
     sqrt_gH = math.sqrt(sc.g * sc.H)
     x_wall = float(case.get("walls", {}).get("tank_hi", case["domain"]["hi"])[0])
-    pressure = [(i, p) for i, p in enumerate(case["probes"]) if p["type"] == "pressure"]
+    def pressure_probes(projection: bool) -> list[tuple[int, dict]]:
+        # indices as the run's case has them (a projection run's case has no force probes)
+        kept = [p for p in case["probes"] if not (projection and sr.is_force_probe(p))]
+        return [(i, p) for i, p in enumerate(kept) if p["type"] == "pressure"]
+
     num = case["numerics"]
     b = case["blocks"][0]
     area = (b["hi"][0] - b["lo"][0]) * (b["hi"][1] - b["lo"][1])
     perimeter = case["domain"]["hi"][0] + 2 * case["domain"]["hi"][1]
     runs = []
     for vname, vset in a.variants:
+        pressure = pressure_probes({**a.common, **vset}.get("numerics.scheme") == "projection")
         for dx in a.dx:
             for k, jitter in [(k, j) for k in a.c0 for j in a.jitters]:
                 c0 = k * sqrt_gH

@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -121,24 +122,36 @@ def run_sluice(sluice: Path, case: Path, out_dir: Path, threads: int,
 
 
 def projection_case(sluice: Path, case_file: Path, out_dir: Path) -> Path:
-    """The case without the keys the projection scheme refuses (those `sluice schema` marks as
-    WCSPH's, e.g. numerics.delta_sph), for the projection variant; the case itself when the
-    binary has no `schema` command."""
+    """The case without what the projection scheme refuses, for a projection variant: the keys
+    `sluice schema` marks as WCSPH's (e.g. numerics.delta_sph) and the force probes (they sum
+    WCSPH pair forces; `is_force_probe`). The case itself when the binary has no `schema`
+    command. Probe indices of the other probes are kept only if the force probes come last."""
     r = subprocess.run([str(sluice), "schema"], capture_output=True, text=True)
     if r.returncode != 0:
         return case_file
     drop = {(k["table"], k["key"]) for k in json.loads(r.stdout) if k["applies"] == "wcsph"}
-    table, kept = "", []
-    for line in case_file.read_text().splitlines(keepends=True):
+    table, kept, probe = "", [], None
+    for line in case_file.read_text().splitlines(keepends=True) + ["[end]\n"]:
         s = line.strip()
         if s.startswith("["):
+            if probe is not None and not any(re.match(r'type\s*=\s*"force"', x.strip())
+                                             for x in probe):
+                kept += probe
+            probe = [] if s.startswith("[[probes]]") else None
             table = s.split("#")[0].strip().strip("[]").strip()
+            if s == "[end]":
+                break
         elif "=" in s and not s.startswith("#") and (table, s.split("=")[0].strip()) in drop:
             continue
-        kept.append(line)
+        (kept if probe is None else probe).append(line)
     out = out_dir / f"{case_file.stem}_projection.toml"
     out.write_text("".join(kept))
     return out
+
+
+def is_force_probe(probe: dict) -> bool:
+    """A probe the projection scheme refuses (see projection_case)."""
+    return probe.get("type") == "force"
 
 
 def machine_description() -> str:
