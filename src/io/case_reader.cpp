@@ -269,12 +269,15 @@ void check_block_thickness(const Section& root, const CaseConfig& c) {
 // Every key the schema marks as read by one scheme only is refused under the other, where it
 // would silently do nothing (numerics.delta_sph under "projection", [projection] under
 // "wcsph"). Keys first, then tables, so that a key in [projection] is named rather than the
-// table. Only plain tables hold such keys (the schema's arrays of tables have none).
+// table; tables in reverse schema order, so that a sub-table ([neighbours.laplacian]) is named
+// rather than its parent (the schema lists a parent first). Only plain tables hold such keys
+// (the schema's arrays of tables have none).
 void check_scheme_keys(const Section& top, Scheme scheme) {
     const Applies own = scheme == Scheme::projection ? Applies::projection : Applies::wcsph;
     const auto& keys = case_file::case_keys();
     for (const bool tables : {false, true})
-        for (const auto& k : keys) {
+        for (std::size_t i = 0; i < keys.size(); ++i) {
+            const auto& k = keys[tables ? keys.size() - 1 - i : i];
             const bool is_table = k.type == "table" || k.type == "array of tables";
             if (k.applies == Applies::any || k.applies == own || is_table != tables)
                 continue;

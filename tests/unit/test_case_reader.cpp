@@ -444,6 +444,8 @@ selection = "convex-hull"
     CHECK(contains(expect_error(kValid2D + "\n[neighbours.gradient]\nselection = \"radius\"\n",
                                 "neighbours.gradient.selection"),
                    "applies only to numerics.scheme = \"projection\""));
+    // An empty sub-table is named itself, not its parent.
+    expect_error(kValid2D + "\n[neighbours.laplacian]\n", "neighbours.laplacian");
 }
 
 TEST_CASE("block shapes and the rotating and strain profiles") {
