@@ -72,6 +72,17 @@ void Simulation<D>::solver_stage(int stage, int group) {
         for (std::uint32_t i = lo; i < hi; ++i)
             switch (d.phase) {
             case SolverPhase::residual:
+                // A Dirichlet row (P5) is solved by p = 0 exactly. Starting it there keeps it
+                // there (its residual, direction and updates are 0 in every phase and with
+                // either preconditioner), instead of converging towards 0 from the last step's
+                // pressure and stopping at a rounding-size value whose sign depends on the
+                // layout: P7's reference pressure takes a neighbour only when its p > 0, so
+                // such a sign flip moved particles by 3e-5 m between 1 and 3 ranks
+                // (docs/PROJECTION.md, "What is rank-invariant").
+                if (d.row[i] == PpeRow::surface)
+                    x[i] = 0;
+                d.y[i] = x[i];
+                break;
             case SolverPhase::sor_sweep:
                 d.y[i] = x[i];
                 break;
