@@ -78,7 +78,7 @@ void Simulation<D>::solver_stage(int stage, int group) {
                 // pressure and stopping at a rounding-size value whose sign depends on the
                 // layout: P7's reference pressure takes a neighbour only when its p > 0, so
                 // such a sign flip moved particles by 3e-5 m between 1 and 3 ranks
-                // (docs/PROJECTION.md, "What is rank-invariant").
+                // (docs/PROJECTION.md, "Dirichlet rows start at 0").
                 if (d.row[i] == PpeRow::surface)
                     x[i] = 0;
                 d.y[i] = x[i];
@@ -210,8 +210,8 @@ void Simulation<D>::factor_block(int group) {
         for (std::uint32_t p = list.offset[i - lo]; p < list.offset[i - lo + 1]; ++p) {
             if (!in_block(i, p))
                 continue;
-            int c = G.block_index[list.j[p] - lo];
-            double v = -double(G.a[p]);
+            const int c = G.block_index[list.j[p] - lo];
+            const double v = -double(G.a[p]);
             std::size_t at = m.col.size();
             m.col.push_back(c);
             m.val.push_back(v);
