@@ -20,7 +20,11 @@ issue 22).
 
 Usage: perf/projection/time_to_solution.py [--dx 0.01] [--end 1.0] [--rounds 1]
            [--variants adaptive,fixed,jacobi,fixed-jacobi] [--threads 1] [--sluice PATH]
-           [--wcsph-sluice PATH] [--out DIR]
+           [--wcsph-sluice PATH] [--out DIR] [--nice 10]
+
+--nice 0 runs at normal priority: on a machine loaded by others' normal-priority jobs, a run
+at nice 10 got 3 % of a core (42 s of CPU in 25 min), which CPU time does not count but the
+session's clock does.
 """
 from __future__ import annotations
 
@@ -73,6 +77,7 @@ def main() -> None:
     ap.add_argument("--sluice", default=str(sr.DEFAULT_SLUICE), help="binary of the projection runs")
     ap.add_argument("--wcsph-sluice", help="binary of the WCSPH runs (default: --sluice)")
     ap.add_argument("--out", help="keep the runs' results here (default: a temporary folder)")
+    ap.add_argument("--nice", type=int, default=10, help="niceness of the runs (0: unchanged)")
     args = ap.parse_args()
     proj_exe = Path(args.sluice)
     wcsph_exe = Path(args.wcsph_sluice or args.sluice)
@@ -96,7 +101,7 @@ def main() -> None:
                 case = "dam_break_2d" if wcsph else "projection_dam_break_2d"
                 out = work / f"r{rnd}_{name}"
                 run = sr.run_sluice(wcsph_exe if wcsph else proj_exe,
-                                    ROOT / "cases" / f"{case}.toml", out, args.threads, nice=10,
+                                    ROOT / "cases" / f"{case}.toml", out, args.threads, nice=args.nice,
                                     echo=False, sets=common + ([] if wcsph else VARIANTS[name]))
                 if not run.ok:
                     print(f"round {rnd} {name:12s} FAILED (exit {run.returncode}): "

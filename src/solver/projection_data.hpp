@@ -37,7 +37,7 @@ struct ProjectionGroup {
     // diagonal block of this group's rows, assembled after ppe_source; its scratch.
     BlockFactor block;
     std::vector<std::int32_t> block_index; // row of the factorised block per particle, or -1
-    std::vector<Eigen::Triplet<double>> triplets;
+    BlockRows block_rows;                  // the block as assembled (buffers reused)
     Eigen::VectorXd work;
 };
 

@@ -72,6 +72,17 @@ void Simulation<D>::solver_stage(int stage, int group) {
         for (std::uint32_t i = lo; i < hi; ++i)
             switch (d.phase) {
             case SolverPhase::residual:
+                // A Dirichlet row (P5) is solved by p = 0 exactly. Starting it there keeps it
+                // there (its residual, direction and updates are 0 in every phase and with
+                // either preconditioner), instead of converging towards 0 from the last step's
+                // pressure and stopping at a rounding-size value whose sign depends on the
+                // layout: P7's reference pressure takes a neighbour only when its p > 0, so
+                // such a sign flip moved particles by 3e-5 m between 1 and 3 ranks
+                // (docs/PROJECTION.md, "Dirichlet rows start at 0").
+                if (d.row[i] == PpeRow::surface)
+                    x[i] = 0;
+                d.y[i] = x[i];
+                break;
             case SolverPhase::sor_sweep:
                 d.y[i] = x[i];
                 break;
@@ -182,18 +193,49 @@ void Simulation<D>::factor_block(int group) {
     for (auto& b : G.block_index)
         if (b == 0)
             b = n++;
-    G.triplets.clear();
+    // Compressed rows straight from the neighbour list: each row's entries sorted by column
+    // (a stable insertion sort: a row holds ~30 entries in the list's scan order, nearly
+    // sorted), duplicate columns (none unless a periodic image repeats) summed in list order.
+    BlockRows& m = G.block_rows;
+    m.outer.assign(1, 0);
+    m.col.clear();
+    m.val.clear();
     for (std::uint32_t i = lo; i < hi; ++i) {
         const std::int32_t k = G.block_index[i - lo];
         if (k < 0)
             continue;
-        G.triplets.emplace_back(k, k, 1.0);
-        for (std::uint32_t p = list.offset[i - lo]; p < list.offset[i - lo + 1]; ++p)
-            if (in_block(i, p))
-                G.triplets.emplace_back(k, G.block_index[list.j[p] - lo], -double(G.a[p]));
+        const std::size_t start = m.col.size();
+        m.col.push_back(k);
+        m.val.push_back(1.0);
+        for (std::uint32_t p = list.offset[i - lo]; p < list.offset[i - lo + 1]; ++p) {
+            if (!in_block(i, p))
+                continue;
+            const int c = G.block_index[list.j[p] - lo];
+            const double v = -double(G.a[p]);
+            std::size_t at = m.col.size();
+            m.col.push_back(c);
+            m.val.push_back(v);
+            for (; at > start && m.col[at - 1] > c; --at) {
+                m.col[at] = m.col[at - 1];
+                m.val[at] = m.val[at - 1];
+            }
+            m.col[at] = c;
+            m.val[at] = v;
+        }
+        std::size_t last = start;
+        for (std::size_t q = start + 1; q < m.col.size(); ++q) {
+            if (m.col[q] == m.col[last]) {
+                m.val[last] += m.val[q];
+                continue;
+            }
+            ++last;
+            m.col[last] = m.col[q];
+            m.val[last] = m.val[q];
+        }
+        m.col.resize(last + 1);
+        m.val.resize(last + 1);
+        m.outer.push_back(static_cast<int>(m.col.size()));
     }
-    Eigen::SparseMatrix<double> m(n, n);
-    m.setFromTriplets(G.triplets.begin(), G.triplets.end()); // duplicates (j = i) are summed
     G.block.factor(m, cfg_.projection.preconditioner == PressurePreconditioner::block_ilu0
                           ? BlockMethod::ilu0
                           : BlockMethod::lu);

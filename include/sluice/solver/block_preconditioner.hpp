@@ -10,10 +10,21 @@
 #include <Eigen/SparseCore>
 
 #include <memory>
+#include <vector>
 
 namespace sluice {
 
 enum class BlockMethod { lu, ilu0 };
+
+// A square block in compressed rows: row r holds the entries [outer[r], outer[r + 1]) of col
+// and val, columns strictly increasing (what ILU(0) works on in place).
+struct BlockRows {
+    std::vector<int> outer, col;
+    std::vector<double> val;
+    [[nodiscard]] int rows() const {
+        return outer.empty() ? 0 : static_cast<int>(outer.size()) - 1;
+    }
+};
 
 class BlockFactor {
 public:
@@ -28,6 +39,10 @@ public:
     // factorisation fails (a singular block, a zero pivot): solve() is then the identity, i.e.
     // the group falls back to the row scaling alone.
     bool factor(const Eigen::SparseMatrix<double>& block, BlockMethod method = BlockMethod::lu);
+    // The same from compressed rows, assembled by the caller without a sort or a copy: the
+    // buffers are swapped in, and `block` gets back those of the previous factorisation (so
+    // that both keep their capacity from step to step).
+    bool factor(BlockRows& block, BlockMethod method);
     // x <- M^{-1} x (the identity before factor() succeeded).
     void solve(Eigen::Ref<Eigen::VectorXd> x) const;
     [[nodiscard]] bool ready() const;
