@@ -12,19 +12,12 @@
 // when, MPI is the runtime's.
 #include "sluice/core/cell_grid.hpp"
 #include "sluice/core/particles.hpp"
+#include "sluice/solver/halo_plan.hpp"
 #include "sluice/tasks/step_graph.hpp"
 
 #include <vector>
 
 namespace sluice {
-
-// Who sends what to each peer this step (filled between steps).
-struct HaloPlan {
-    std::vector<std::vector<CellIndex>> send_cells;  // per peer, this rank's cells in key order
-    std::vector<std::size_t> send_count, send_walls; // particles (and walls among them) sent
-    std::vector<std::size_t> recv_count, recv_walls; // particles (and walls) received
-    std::vector<std::size_t> recv_offset;            // where each peer's halo starts in P
-};
 
 template <int D>
 class HaloFields final : public tasks::HaloData {

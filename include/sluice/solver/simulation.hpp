@@ -15,7 +15,7 @@
 #include "sluice/physics/riemann.hpp"
 #include "sluice/physics/timestep.hpp"
 #include "sluice/physics/walls.hpp"
-#include "sluice/solver/halo_fields.hpp"
+#include "sluice/solver/halo_plan.hpp"
 #include "sluice/solver/pressure_solve.hpp"
 #include "sluice/solver/state_check.hpp"
 #include "sluice/tasks/comm.hpp"
