@@ -64,7 +64,7 @@ std::unique_ptr<tasks::StepGraph> WcsphScheme<D>::build_graph(const GraphSite& s
         stage_kinds_.push_back(s.kind);
     }
     return graph_of_rows(
-        rows, std::optional<What>(What::state), &HaloFields<D>::name,
+        rows, std::optional<What>(What::state), [this](What w) { return halo_->name(w); },
         [this](int stage, int group) { run_stage(stage, group); }, site, halo_.get(), halo_->what);
 }
 
