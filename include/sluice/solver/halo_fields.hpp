@@ -73,15 +73,19 @@ public:
     void pack(int e, int p, tasks::Bytes& out) override {
         const Field& f = field(what[static_cast<std::size_t>(e)]);
         const auto k = static_cast<std::size_t>(p);
-        out.reserve(bytes(f, plan_.send_count[k], plan_.send_walls[k]));
+        out.reserve(out.size() + bytes(f, plan_.send_count[k], plan_.send_walls[k]));
+        const std::size_t row = row_bytes(f);
         for (CellIndex c : plan_.send_cells[k])
             for (std::uint32_t i = ranges_.begin[c]; i < ranges_.end[c]; ++i)
-                if (!f.only || P_.kind[i] == *f.only)
+                if (!f.only || P_.kind[i] == *f.only) {
+                    const std::size_t n = out.size();
+                    out.resize(n + row);
+                    std::byte* to = out.data() + n;
                     for (const Column& col : f.columns) {
-                        const std::size_t n = out.size();
-                        out.resize(n + col.size);
-                        std::memcpy(out.data() + n, col.at(P_, i), col.size);
+                        col.put(P_, i, to);
+                        to += col.size;
                     }
+                }
     }
 
     void unpack(int e, int p, std::span<const std::byte> in) override {
@@ -89,32 +93,39 @@ public:
         const Field& f = field(w);
         const auto k = static_cast<std::size_t>(p);
         const std::size_t first = plan_.recv_offset[k], last = first + plan_.recv_count[k];
-        std::size_t pos = 0;
-        // The state comes first in a particle's row: its kind, read here, selects the
-        // particles of the later fields.
+        const std::byte* from = in.data();
+        // The state exchange brings each halo particle's kind, which selects the particles of
+        // the later fields.
         for (std::size_t i = first; i < last; ++i)
             if (!f.only || P_.kind[i] == *f.only)
                 for (const Column& col : f.columns) {
-                    std::memcpy(col.at(P_, i), in.data() + pos, col.size);
-                    pos += col.size;
+                    col.take(P_, i, from);
+                    from += col.size;
                 }
         if (w == What::state && assign_cells)
             assign_halo_cells(first, last);
     }
 
 private:
-    // One particle array a field copies: its element size and where particle i's element is
-    // (looked up at each use: the arrays grow with the halo).
+    // One particle array a field copies: its element size, and the copies of particle i's
+    // element to and from a buffer, each with the element's size known at compile time (a
+    // memcpy of a run-time size is a library call per element). The arrays are looked up at
+    // each use: they grow with the halo.
     struct Column {
         std::size_t size;
-        std::byte* (*at)(Particles<D>&, std::size_t);
+        void (*put)(const Particles<D>&, std::size_t, std::byte*);
+        void (*take)(Particles<D>&, std::size_t, const std::byte*);
     };
     template <auto Member>
     static Column column() {
         using Element = typename std::remove_reference_t<decltype(std::declval<Particles<D>&>().*
                                                                   Member)>::value_type;
-        return {sizeof(Element), [](Particles<D>& P, std::size_t i) {
-                    return reinterpret_cast<std::byte*>(&(P.*Member)[i]);
+        return {sizeof(Element),
+                [](const Particles<D>& P, std::size_t i, std::byte* to) {
+                    std::memcpy(to, static_cast<const void*>(&(P.*Member)[i]), sizeof(Element));
+                },
+                [](Particles<D>& P, std::size_t i, const std::byte* from) {
+                    std::memcpy(static_cast<void*>(&(P.*Member)[i]), from, sizeof(Element));
                 }};
     }
     struct Field {
@@ -126,11 +137,15 @@ private:
 
     // Bytes of one exchange of `f` for n particles of which w are walls.
     [[nodiscard]] static std::size_t bytes(const Field& f, std::size_t n, std::size_t w) {
+        const std::size_t count = !f.only ? n : *f.only == Kind::wall ? w : n - w;
+        return count * row_bytes(f);
+    }
+    // Bytes of one particle's row of `f`.
+    [[nodiscard]] static std::size_t row_bytes(const Field& f) {
         std::size_t row = 0;
         for (const Column& col : f.columns)
             row += col.size;
-        const std::size_t count = !f.only ? n : *f.only == Kind::wall ? w : n - w;
-        return count * row;
+        return row;
     }
 
     // The halo cells' particle ranges, by the cells of the sort (the positions of the last
