@@ -1,14 +1,11 @@
 #include "sluice/solver/simulation.hpp"
 
 #include "sluice/io/errors.hpp"
-#include "sluice/physics/density.hpp"
-#include "sluice/physics/drift.hpp"
-#include "sluice/physics/integrator.hpp"
-#include "sluice/physics/riemann.hpp"
-#include "sluice/physics/shifting.hpp"
 #include "sluice/solver/initial_state.hpp"
 
-#include "projection_data.hpp"
+#include "schemes/projection/projection_scheme.hpp"
+#include "schemes/wcsph/wcsph_scheme.hpp"
+#include "step_scheme.hpp"
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -59,6 +56,18 @@ std::vector<Plane<D>> reflective_planes(const CaseConfig& cfg) {
     return planes;
 }
 
+// The case's scheme (numerics.scheme).
+template <int D>
+std::unique_ptr<StepScheme<D>> make_scheme(Simulation<D>& sim, Scheme scheme) {
+    switch (scheme) {
+    case Scheme::wcsph:
+        return std::make_unique<WcsphScheme<D>>(sim);
+    case Scheme::projection:
+        return std::make_unique<ProjectionScheme<D>>(sim);
+    }
+    throw InternalError("unknown numerics.scheme");
+}
+
 } // namespace
 
 template <int D>
@@ -73,8 +82,6 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
       opts_(std::move(opts)), comm_(tasks::Comm::world()) {
     h_ = cfg.h_over_dx * cfg.dx;
     const double support = kernel_support_factor(cfg.kernel) * h_;
-    // The projection step builds its own lists every step (its operators use another radius).
-    skin_ = cfg.scheme == Scheme::projection ? Real(0) : Real(cfg.neighbour_skin * cfg.dx);
     eos_ = Eos{cfg.eos, Real(cfg.rho0), Real(cfg.sound_speed), Real(cfg.gamma),
                Real(cfg.background_pressure)};
 
@@ -83,19 +90,11 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     momentum_.alpha = Real(cfg.artificial_viscosity);
     momentum_.c0 = Real(cfg.sound_speed);
     momentum_.h = Real(h_);
-    continuity_ = cfg.density == DensityScheme::continuity;
-    delta_h_c0_ = continuity_ ? cfg.delta_sph * h_ * cfg.sound_speed : 0.0;
-    diffusion_ = DensityDiffusionParams<D>{Real(delta_h_c0_), cfg.density_diffusion,
-                                           Real(cfg.rho0) * momentum_.gravity /
-                                               Real(cfg.sound_speed * cfg.sound_speed)};
-    density_gradient_ = delta_h_c0_ > 0 && cfg.density_diffusion == DensityDiffusion::antuono;
     momentum_.wall_viscous = cfg.no_slip;
     momentum_.wall_artificial = cfg.wall_artificial_viscosity;
     momentum_.p_floor = Real(cfg.background_pressure);
-    riemann_dissipation_ = cfg.dissipation == Dissipation::riemann;
-    riemann_ = RiemannParams<D>{
-        momentum_.gravity, Real(cfg.rho0), Real(cfg.sound_speed),  Real(3),
-        momentum_.mu,      momentum_.h,    momentum_.wall_viscous, momentum_.p_floor};
+    scheme_ = make_scheme<D>(*this, cfg.scheme);
+    skin_ = scheme_->skin();
 
     ts_params_ =
         TimeStepParams{h_, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl, cfg.force_cfl};
@@ -189,12 +188,9 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
                                  : std::max(1, std::min(allowed, tbb::info::default_concurrency()) -
                                                    (comm_.parallel() ? 1 : 0));
     arena_ = std::make_unique<tbb::task_arena>(threads_ + (comm_.parallel() ? 1 : 0), 1);
-    halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_,
-                                            density_gradient_, skin_ > 0);
     window_busy_.assign(static_cast<std::size_t>(comm_.size()), 0.0);
     cut_busy_ = window_busy_;
-    if (cfg.scheme == Scheme::projection)
-        init_projection();
+    scheme_->start();
 
     // A restart sorts, distributes and groups the particles by the positions of the last
     // rebuild, so that the Verlet lists of its first step are those of the interrupted run and
@@ -224,8 +220,7 @@ TimeStepLimits Simulation<D>::limits_at_rest() const {
     Real vmax = 0;
     for (std::size_t i = 0; i < P_.size(); ++i)
         vmax = std::max(vmax, P_.v[i].norm());
-    const double c = cfl_sound_speed(cfg_.scheme == Scheme::projection, cfg_.sound_speed);
-    return particle_time_step(ts_params_, c, vmax, std::sqrt(g));
+    return particle_time_step(ts_params_, scheme_->cfl_speed(), vmax, std::sqrt(g));
 }
 
 template <int D>
@@ -304,67 +299,25 @@ void Simulation<D>::rebuild() {
 
 template <int D>
 void Simulation<D>::build_graph() {
-    if (proj_) {
-        build_projection_graph();
-        return;
-    }
-    using tasks::Reach;
-    using What = typename HaloFields<D>::What;
-    // The WCSPH step, one row per stage: its name, what it computes (wcsph_stages.cpp), how
-    // far it reads, and the halo field its results travel as to the other ranks' next stages
-    // (before the first stage the state travels). The graph and its halo exchanges follow
-    // from these rows alone.
-    struct StageRow {
-        const char* name;
-        StageKind kind;
-        Reach reach;
-        std::optional<What> sends;
-    };
-    std::vector<StageRow> rows;
-    rows.push_back({"density", StageKind::density, Reach::neighbourhood, What::pressure});
-    if (cfg_.walls == WallModel::dummy)
-        rows.push_back({"walls", StageKind::walls, Reach::neighbourhood, What::walls});
-    rows.push_back({"accel", StageKind::accel, Reach::neighbourhood, std::nullopt});
-    // The continuity rate reads the neighbours' kicked velocities; summation needs nothing.
-    rows.push_back({"kick", StageKind::kick, Reach::self,
-                    continuity_ ? std::optional<What>(What::velocity) : std::nullopt});
-    rows.push_back({"drift", StageKind::drift, continuity_ ? Reach::neighbourhood : Reach::self,
-                    std::nullopt});
-
-    std::vector<tasks::StageSpec> specs;
-    stage_kinds_.clear();
-    for (const StageRow& row : rows) {
-        specs.push_back({row.name, row.reach});
-        stage_kinds_.push_back(row.kind);
-    }
-    group_limits_.assign(topo_.neighbours.size(), {});
-    group_failure_.assign(topo_.neighbours.size(), {});
-    group_speed_.assign(topo_.neighbours.size(), 0.0);
-    lists_.resize(topo_.neighbours.size());
-    wide_.resize(skin_ > 0 ? topo_.neighbours.size() : 0);
-    group_disp2_.assign(topo_.neighbours.size(), 0.0);
-    group_busy_.assign(topo_.neighbours.size(), 0.0);
+    // The scheme declares the stages (and their halo exchanges); the per-group results of a
+    // step are everyone's.
+    const std::size_t groups = topo_.neighbours.size();
+    group_limits_.assign(groups, {});
+    group_failure_.assign(groups, {});
+    group_speed_.assign(groups, 0.0);
+    lists_.resize(groups);
+    wide_.resize(skin_ > 0 ? groups : 0);
+    group_disp2_.assign(groups, 0.0);
+    group_busy_.assign(groups, 0.0);
     graph_steps_ = 0;
 
-    tasks::HaloWiring wiring;
+    GraphSite site{&topo_.neighbours, comm_.parallel(), {}, {}, arena_.get()};
     if (comm_.parallel()) {
-        halo_->what.clear();
-        wiring.exchanges.push_back({"state", -1});
-        halo_->what.push_back(What::state);
-        for (std::size_t stage = 0; stage < rows.size(); ++stage)
-            if (rows[stage].sends) {
-                wiring.exchanges.push_back(
-                    {HaloFields<D>::name(*rows[stage].sends), static_cast<int>(stage)});
-                halo_->what.push_back(*rows[stage].sends);
-            }
-        wiring.peers = peers_;
-        wiring.boundary = boundary_groups();
-        wiring.data = halo_.get();
+        site.peers = peers_;
+        site.boundary = boundary_groups();
     }
     graph_.reset(); // the old graph lives in the arena too
-    graph_ = std::make_unique<tasks::StepGraph>(
-        specs, topo_.neighbours, [this](int stage, int group) { run_stage(stage, group); },
-        std::move(wiring), arena_.get());
+    graph_ = scheme_->build_graph(site);
     graph_->inject_receive_delay(receive_delay_);
 }
 
@@ -372,16 +325,12 @@ template <int D>
 void Simulation<D>::step() {
     if (rebuilt_)
         ++list_rebuilds_;
-    halo_->assign_cells = rebuilt_;
     graph_->inject_receive_delay(receive_delay_);
     std::string task_error;
     try {
         // A throwing task does not stop the graph: its messages still go out, so every rank
         // completes the step and learns of the error in the reduction below.
-        if (proj_)
-            run_projection();
-        else
-            graph_->run();
+        scheme_->run();
     } catch (const std::exception& e) {
         task_error = e.what();
     }
@@ -438,6 +387,16 @@ SolverState Simulation<D>::solver_state() const {
     s.limit_viscous = limits_.viscous;
     s.limit_force = limits_.force;
     return s;
+}
+
+template <int D>
+const PressureSolveRecord* Simulation<D>::last_pressure_solve() const {
+    return scheme_->last_pressure_solve();
+}
+
+template <int D>
+const PressureSolveTotals* Simulation<D>::pressure_solve_totals() const {
+    return scheme_->pressure_solve_totals();
 }
 
 template <int D>

@@ -8,23 +8,22 @@
 //                              grad rho (delta-SPH)
 //   walls     (after walls)    wall particles: p, rho, mass, v_bc -> accel
 //   velocity  (after kick)     fluid particles: v^{n+1/2}         -> drift (continuity)
+// Each field is one row of a table (the constructor): the particles it carries and the
+// particle arrays it copies, in order; sizes, packing and unpacking follow from the row.
 // Pure data movement between the particle arrays and byte buffers; the step graph decides
 // when, MPI is the runtime's.
 #include "sluice/core/cell_grid.hpp"
 #include "sluice/core/particles.hpp"
+#include "sluice/solver/halo_plan.hpp"
 #include "sluice/tasks/step_graph.hpp"
 
+#include <array>
+#include <cstring>
+#include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace sluice {
-
-// Who sends what to each peer this step (filled between steps).
-struct HaloPlan {
-    std::vector<std::vector<CellIndex>> send_cells;  // per peer, this rank's cells in key order
-    std::vector<std::size_t> send_count, send_walls; // particles (and walls among them) sent
-    std::vector<std::size_t> recv_count, recv_walls; // particles (and walls) received
-    std::vector<std::size_t> recv_offset;            // where each peer's halo starts in P
-};
 
 template <int D>
 class HaloFields final : public tasks::HaloData {
@@ -32,19 +31,7 @@ public:
     enum class What { state, pressure, walls, velocity };
     std::vector<What> what; // per exchange of the graph
     // The exchange's name in traces and profiles.
-    static const char* name(What w) {
-        switch (w) {
-        case What::state:
-            return "state";
-        case What::pressure:
-            return "pressure";
-        case What::walls:
-            return "walls";
-        case What::velocity:
-            return "velocity";
-        }
-        return "?";
-    }
+    [[nodiscard]] const char* name(What w) const { return field(w).name; }
     // Whether the state exchange records the halo cells' particle ranges: only on steps that
     // rebuild the neighbour lists (between rebuilds the particles stay where they were sorted,
     // although they may have moved into the next cell).
@@ -52,138 +39,137 @@ public:
 
     HaloFields(Particles<D>& P, CellRanges& ranges, const CellGrid<D>& grid, const HaloPlan& plan,
                bool summation, bool gradient, bool reference_positions)
-        : P_(P), ranges_(ranges), grid_(grid), plan_(plan), summation_(summation),
-          gradient_(gradient), reference_(reference_positions) {}
+        : P_(P), ranges_(ranges), grid_(grid), plan_(plan), reference_(reference_positions) {
+        using PD = Particles<D>;
+        Field& state = fields_[static_cast<std::size_t>(What::state)];
+        state = {"state",
+                 std::nullopt,
+                 {column<&PD::id>(), column<&PD::kind>(), column<&PD::x>(), column<&PD::v>(),
+                  column<&PD::rho>(), column<&PD::mass>()}};
+        if (reference_)
+            state.columns.push_back(column<&PD::x_ref>());
+        Field& pressure = fields_[static_cast<std::size_t>(What::pressure)];
+        pressure = {"pressure",
+                    std::nullopt,
+                    {column<&PD::p>(), column<&PD::p_over_rho2>(), column<&PD::volume>()}};
+        if (summation)
+            pressure.columns.push_back(column<&PD::rho>());
+        if (gradient)
+            pressure.columns.push_back(column<&PD::grad_rho>());
+        fields_[static_cast<std::size_t>(What::walls)] = {
+            "walls",
+            Kind::wall,
+            {column<&PD::p>(), column<&PD::rho>(), column<&PD::mass>(), column<&PD::v_bc>()}};
+        fields_[static_cast<std::size_t>(What::velocity)] = {
+            "velocity", Kind::fluid, {column<&PD::v_half>()}};
+    }
 
     [[nodiscard]] std::size_t recv_bytes(int e, int p) const override {
         const auto k = static_cast<std::size_t>(p);
-        return bytes(what[static_cast<std::size_t>(e)], plan_.recv_count[k], plan_.recv_walls[k]);
+        return bytes(field(what[static_cast<std::size_t>(e)]), plan_.recv_count[k],
+                     plan_.recv_walls[k]);
     }
 
     void pack(int e, int p, tasks::Bytes& out) override {
-        using tasks::put;
-        const What kind = what[static_cast<std::size_t>(e)];
+        const Field& f = field(what[static_cast<std::size_t>(e)]);
         const auto k = static_cast<std::size_t>(p);
-        out.reserve(bytes(kind, plan_.send_count[k], plan_.send_walls[k]));
+        out.reserve(out.size() + bytes(f, plan_.send_count[k], plan_.send_walls[k]));
+        const std::size_t row = row_bytes(f);
         for (CellIndex c : plan_.send_cells[k])
             for (std::uint32_t i = ranges_.begin[c]; i < ranges_.end[c]; ++i)
-                switch (kind) {
-                case What::state:
-                    put(out, P_.id[i]);
-                    put(out, P_.kind[i]);
-                    put(out, P_.x[i]);
-                    put(out, P_.v[i]);
-                    put(out, P_.rho[i]);
-                    put(out, P_.mass[i]);
-                    if (reference_)
-                        put(out, P_.x_ref[i]);
-                    break;
-                case What::pressure:
-                    put(out, P_.p[i]);
-                    put(out, P_.p_over_rho2[i]);
-                    put(out, P_.volume[i]);
-                    if (summation_)
-                        put(out, P_.rho[i]);
-                    if (gradient_)
-                        put(out, P_.grad_rho[i]);
-                    break;
-                case What::walls:
-                    if (P_.kind[i] != Kind::wall)
-                        break;
-                    put(out, P_.p[i]);
-                    put(out, P_.rho[i]);
-                    put(out, P_.mass[i]);
-                    put(out, P_.v_bc[i]);
-                    break;
-                case What::velocity:
-                    if (P_.kind[i] == Kind::fluid)
-                        put(out, P_.v_half[i]);
-                    break;
+                if (!f.only || P_.kind[i] == *f.only) {
+                    const std::size_t n = out.size();
+                    out.resize(n + row);
+                    std::byte* to = out.data() + n;
+                    for (const Column& col : f.columns) {
+                        col.put(P_, i, to);
+                        to += col.size;
+                    }
                 }
     }
 
     void unpack(int e, int p, std::span<const std::byte> in) override {
-        using tasks::take_into;
+        const What w = what[static_cast<std::size_t>(e)];
+        const Field& f = field(w);
         const auto k = static_cast<std::size_t>(p);
         const std::size_t first = plan_.recv_offset[k], last = first + plan_.recv_count[k];
-        std::size_t pos = 0;
-        switch (what[static_cast<std::size_t>(e)]) {
-        case What::state: {
-            for (std::size_t i = first; i < last; ++i) {
-                take_into(in, pos, P_.id[i]);
-                take_into(in, pos, P_.kind[i]);
-                take_into(in, pos, P_.x[i]);
-                take_into(in, pos, P_.v[i]);
-                take_into(in, pos, P_.rho[i]);
-                take_into(in, pos, P_.mass[i]);
-                if (reference_)
-                    take_into(in, pos, P_.x_ref[i]);
-            }
-            // Cells of the sort: by the positions of the last rebuild.
-            const std::vector<Vec<D>>& sorted_by = reference_ ? P_.x_ref : P_.x;
-            // The peer sent whole cells in key order: each halo cell is one contiguous run.
-            for (std::size_t i = first; assign_cells && i < last;) {
-                const CellIndex c = grid_.linear(grid_.coords(sorted_by[i]));
-                std::size_t j = i + 1;
-                while (j < last && grid_.linear(grid_.coords(sorted_by[j])) == c)
-                    ++j;
-                ranges_.begin[c] = static_cast<std::uint32_t>(i);
-                ranges_.end[c] = static_cast<std::uint32_t>(j);
-                i = j;
-            }
-            break;
-        }
-        case What::pressure:
-            for (std::size_t i = first; i < last; ++i) {
-                take_into(in, pos, P_.p[i]);
-                take_into(in, pos, P_.p_over_rho2[i]);
-                take_into(in, pos, P_.volume[i]);
-                if (summation_)
-                    take_into(in, pos, P_.rho[i]);
-                if (gradient_)
-                    take_into(in, pos, P_.grad_rho[i]);
-            }
-            break;
-        case What::walls:
-            for (std::size_t i = first; i < last; ++i)
-                if (P_.kind[i] == Kind::wall) {
-                    take_into(in, pos, P_.p[i]);
-                    take_into(in, pos, P_.rho[i]);
-                    take_into(in, pos, P_.mass[i]);
-                    take_into(in, pos, P_.v_bc[i]);
+        const std::byte* from = in.data();
+        // The state exchange brings each halo particle's kind, which selects the particles of
+        // the later fields.
+        for (std::size_t i = first; i < last; ++i)
+            if (!f.only || P_.kind[i] == *f.only)
+                for (const Column& col : f.columns) {
+                    col.take(P_, i, from);
+                    from += col.size;
                 }
-            break;
-        case What::velocity:
-            for (std::size_t i = first; i < last; ++i)
-                if (P_.kind[i] == Kind::fluid)
-                    take_into(in, pos, P_.v_half[i]);
-            break;
-        }
+        if (w == What::state && assign_cells)
+            assign_halo_cells(first, last);
     }
 
 private:
-    // Bytes of one exchange for n particles of which w are walls.
-    [[nodiscard]] std::size_t bytes(What kind, std::size_t n, std::size_t w) const {
-        switch (kind) {
-        case What::state:
-            return n * (sizeof(ParticleId) + sizeof(Kind) + (reference_ ? 3 : 2) * sizeof(Vec<D>) +
-                        2 * sizeof(Real));
-        case What::pressure:
-            return n * (3 * sizeof(Real) + (summation_ ? sizeof(Real) : 0) +
-                        (gradient_ ? sizeof(Vec<D>) : 0));
-        case What::walls:
-            return w * (3 * sizeof(Real) + sizeof(Vec<D>));
-        case What::velocity:
-            return (n - w) * sizeof(Vec<D>);
+    // One particle array a field copies: its element size, and the copies of particle i's
+    // element to and from a buffer, each with the element's size known at compile time (a
+    // memcpy of a run-time size is a library call per element). The arrays are looked up at
+    // each use: they grow with the halo.
+    struct Column {
+        std::size_t size;
+        void (*put)(const Particles<D>&, std::size_t, std::byte*);
+        void (*take)(Particles<D>&, std::size_t, const std::byte*);
+    };
+    template <auto Member>
+    static Column column() {
+        using Element = typename std::remove_reference_t<decltype(std::declval<Particles<D>&>().*
+                                                                  Member)>::value_type;
+        return {sizeof(Element),
+                [](const Particles<D>& P, std::size_t i, std::byte* to) {
+                    std::memcpy(to, static_cast<const void*>(&(P.*Member)[i]), sizeof(Element));
+                },
+                [](Particles<D>& P, std::size_t i, const std::byte* from) {
+                    std::memcpy(static_cast<void*>(&(P.*Member)[i]), from, sizeof(Element));
+                }};
+    }
+    struct Field {
+        const char* name = "?";
+        std::optional<Kind> only; // the particles it carries (all if empty)
+        std::vector<Column> columns;
+    };
+    [[nodiscard]] const Field& field(What w) const { return fields_[static_cast<std::size_t>(w)]; }
+
+    // Bytes of one exchange of `f` for n particles of which w are walls.
+    [[nodiscard]] static std::size_t bytes(const Field& f, std::size_t n, std::size_t w) {
+        const std::size_t count = !f.only ? n : *f.only == Kind::wall ? w : n - w;
+        return count * row_bytes(f);
+    }
+    // Bytes of one particle's row of `f`.
+    [[nodiscard]] static std::size_t row_bytes(const Field& f) {
+        std::size_t row = 0;
+        for (const Column& col : f.columns)
+            row += col.size;
+        return row;
+    }
+
+    // The halo cells' particle ranges, by the cells of the sort (the positions of the last
+    // rebuild).
+    void assign_halo_cells(std::size_t first, std::size_t last) {
+        const std::vector<Vec<D>>& sorted_by = reference_ ? P_.x_ref : P_.x;
+        // The peer sent whole cells in key order: each halo cell is one contiguous run.
+        for (std::size_t i = first; i < last;) {
+            const CellIndex c = grid_.linear(grid_.coords(sorted_by[i]));
+            std::size_t j = i + 1;
+            while (j < last && grid_.linear(grid_.coords(sorted_by[j])) == c)
+                ++j;
+            ranges_.begin[c] = static_cast<std::uint32_t>(i);
+            ranges_.end[c] = static_cast<std::uint32_t>(j);
+            i = j;
         }
-        return 0;
     }
 
     Particles<D>& P_;
     CellRanges& ranges_;
     const CellGrid<D>& grid_;
     const HaloPlan& plan_;
-    bool summation_, gradient_, reference_;
+    bool reference_;
+    std::array<Field, 4> fields_; // per What
 };
 
 } // namespace sluice

@@ -1,7 +1,8 @@
 #pragma once
-// A WCSPH simulation: the scene (particles, grid, walls) plus the step graph that advances it.
-// This is where physics stages are bound to the runtime's (stage, group) nodes; the physics
-// itself lives in include/sluice/physics/, the scheduling in tasks/.
+// A simulation: the scene (particles, grid, walls) plus the step graph that advances it. Its
+// scheme (WCSPH or projection, src/solver/schemes/) declares the stages and binds the physics
+// to the runtime's (stage, group) nodes; the physics itself lives in include/sluice/physics/,
+// the scheduling in tasks/.
 #include "sluice/core/cell_grid.hpp"
 #include "sluice/core/particles.hpp"
 #include "sluice/core/rebin.hpp"
@@ -14,7 +15,7 @@
 #include "sluice/physics/riemann.hpp"
 #include "sluice/physics/timestep.hpp"
 #include "sluice/physics/walls.hpp"
-#include "sluice/solver/halo_fields.hpp"
+#include "sluice/solver/halo_plan.hpp"
 #include "sluice/solver/pressure_solve.hpp"
 #include "sluice/solver/state_check.hpp"
 #include "sluice/tasks/comm.hpp"
@@ -69,9 +70,11 @@ struct BalanceSample {
 };
 
 template <int D>
-struct ProjectionData; // src/solver/projection_data.hpp
+class StepScheme; // src/solver/step_scheme.hpp
+template <int D>
+struct SchemeContext;
 
-// A WCSPH simulation on this rank: its particles (plus halo copies of its neighbours'), the
+// A simulation on this rank: its particles (plus halo copies of its neighbours'), the
 // grid, and the step graph that advances them. On several MPI ranks every rank holds one of
 // these; collective member functions are marked.
 template <int D>
@@ -175,23 +178,10 @@ private:
     [[nodiscard]] std::vector<std::vector<int>> boundary_groups() const;
     void reduce_step_results(const std::string& task_error);
     void build_graph();
-    void run_stage(int stage, int group);
-    template <class K>
-    void run_stage_with(const K& kernel, int stage, int group);
 
-    enum class StageKind { density, walls, accel, kick, drift };
-
-    // Projection scheme (src/solver/projection_step.cpp).
-    void init_projection();
-    void build_projection_graph();
-    void run_projection();
-    template <class K>
-    void projection_stage(const K& kernel, int stage, int group);
-    void solver_stage(int stage, int group);
-    void factor_block(int group); // block-Jacobi preconditioner of the group (after ppe_source)
-    void correct_stage(int group);
-    std::string solve_pressure(std::string& error); // non-empty: did not converge
-    std::array<double, 7> reduce_partials(int count, bool failed_here);
+    // The scheme's stage bodies read and write the state below through this view.
+    template <int>
+    friend struct SchemeContext;
 
     CaseConfig cfg_;
     Particles<D> P_;
@@ -203,25 +193,18 @@ private:
     AnyKernel<D> kernel_;
     Eos eos_;
     MomentumParams<D> momentum_;
-    RiemannParams<D> riemann_; // numerics.dissipation = "riemann"
-    bool riemann_dissipation_ = false;
     TimeStepParams ts_params_;
     std::vector<Plane<D>> planes_;
     Vec<D> domain_lo_, domain_hi_;
     StateBounds<D> bounds_; // healthy range of a fluid particle's state
     double h_ = 0;
-    bool continuity_ = false;
-    double delta_h_c0_ = 0; // delta-SPH coefficient times h c0
-    DensityDiffusionParams<D> diffusion_;
-    bool density_gradient_ = false; // the density stage computes the renormalised gradient
 
     tasks::GroupTopology topo_;
     std::unique_ptr<tasks::StepGraph> graph_;
-    std::vector<StageKind> stage_kinds_;
     int decompositions_ = 0;
     int target_groups_ = 1;
 
-    // Per-group results of the drift stage.
+    // Per-group results of the step's last stage (drift, correct).
     std::vector<TimeStepLimits> group_limits_;
     std::vector<std::string> group_failure_;
     std::vector<NeighbourList<D>> lists_; // per group, rebuilt by its first stage each step
@@ -252,8 +235,7 @@ private:
     std::size_t owned_ = 0;
     HaloPlan plan_;
     std::vector<std::vector<int>> occupied_targets_; // per occupied cell: peers it is halo of
-    std::unique_ptr<HaloFields<D>> halo_;
-    std::vector<tasks::MessageRecord> between_; // communication outside the last graph
+    std::vector<tasks::MessageRecord> between_;      // communication outside the last graph
     tasks::RankProfile profile_;
     std::unique_ptr<tasks::TraceRecorder> trace_;
     double receive_delay_ = 0;
@@ -276,7 +258,7 @@ private:
     bool force_regroup_ = false;
 
     // Last member: its graphs live in arena_ and are destroyed first.
-    std::unique_ptr<ProjectionData<D>> proj_;
+    std::unique_ptr<StepScheme<D>> scheme_;
 };
 
 extern template class Simulation<2>;

@@ -1,11 +1,10 @@
 // The projection scheme's pressure solvers (docs/PROJECTION.md, "Solvers"): matrix-free
 // BiCGSTAB and SOR as repeated runs of a small solver graph, the iterate exchanged between
 // ranks, and the global reductions of their dot products.
+#include "projection_scheme.hpp"
+
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/projection.hpp"
-#include "sluice/solver/simulation.hpp"
-
-#include "projection_data.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -18,7 +17,7 @@ namespace sluice {
 // scaled operator (docs/PROJECTION.md, "Solvers"). Partial dot products are summed per group
 // in particle order.
 template <int D>
-void Simulation<D>::solver_stage(int stage, int group) {
+void ProjectionScheme<D>::solver_stage(int stage, int group) {
     ProjectionData<D>& d = *proj_;
     const auto gi = static_cast<std::size_t>(group);
     ProjectionGroup<D>& G = d.groups[gi];
@@ -171,7 +170,7 @@ void Simulation<D>::solver_stage(int stage, int group) {
 // away from the fluid) are identity rows that decouple: they are left out of the factorised
 // block (z_i = r_i), which is then mostly the fluid rows and the walls next to them.
 template <int D>
-void Simulation<D>::factor_block(int group) {
+void ProjectionScheme<D>::factor_block(int group) {
     ProjectionData<D>& d = *proj_;
     const auto gi = static_cast<std::size_t>(group);
     ProjectionGroup<D>& G = d.groups[gi];
@@ -242,7 +241,7 @@ void Simulation<D>::factor_block(int group) {
 }
 
 template <int D>
-std::array<double, 7> Simulation<D>::reduce_partials(int count, bool failed_here) {
+std::array<double, 7> ProjectionScheme<D>::reduce_partials(int count, bool failed_here) {
     // Per group in group order, then across ranks in rank order: every rank gets the same
     // numbers, so every rank takes the same decisions (iterate, stop, fail).
     std::array<double, 7> sum{};
@@ -268,7 +267,7 @@ std::array<double, 7> Simulation<D>::reduce_partials(int count, bool failed_here
 }
 
 template <int D>
-std::string Simulation<D>::solve_pressure(std::string& error) {
+std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
     ProjectionData<D>& d = *proj_;
     const ProjectionSettings& ps = cfg_.projection;
     const auto t0 = std::chrono::steady_clock::now();
@@ -467,10 +466,10 @@ std::string Simulation<D>::solve_pressure(std::string& error) {
 }
 
 #define SLUICE_PROJECTION_SOLVER_MEMBERS(D)                                                        \
-    template void Simulation<D>::solver_stage(int, int);                                           \
-    template void Simulation<D>::factor_block(int);                                                \
-    template std::string Simulation<D>::solve_pressure(std::string&);                              \
-    template std::array<double, 7> Simulation<D>::reduce_partials(int, bool);
+    template void ProjectionScheme<D>::solver_stage(int, int);                                     \
+    template void ProjectionScheme<D>::factor_block(int);                                          \
+    template std::string ProjectionScheme<D>::solve_pressure(std::string&);                        \
+    template std::array<double, 7> ProjectionScheme<D>::reduce_partials(int, bool);
 SLUICE_PROJECTION_SOLVER_MEMBERS(2)
 SLUICE_PROJECTION_SOLVER_MEMBERS(3)
 #undef SLUICE_PROJECTION_SOLVER_MEMBERS

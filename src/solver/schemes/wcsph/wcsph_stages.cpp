@@ -1,8 +1,10 @@
-// The WCSPH scheme's stage bodies: what each node (stage, cell group) of the step graph
-// computes, calling the formulas of include/sluice/physics/ (density.hpp, walls.hpp,
-// momentum.hpp, riemann.hpp, shifting.hpp, integrator.hpp, drift.hpp). The stages themselves
-// and their halo exchanges are declared in simulation.cpp (build_graph).
-#include "sluice/solver/simulation.hpp"
+// The WCSPH scheme: its stages, declared once each as a row of stage_table (name, what the
+// stage computes, how far it reads, the halo field its results travel as), and the stage
+// bodies: what each node (stage, cell group) of the step graph computes, calling the
+// formulas of include/sluice/physics/ (density.hpp, walls.hpp, momentum.hpp, riemann.hpp,
+// shifting.hpp, integrator.hpp, drift.hpp). The graph and its halo exchanges follow from the
+// rows alone.
+#include "wcsph_scheme.hpp"
 
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/drift.hpp"
@@ -17,13 +19,69 @@
 namespace sluice {
 
 template <int D>
-void Simulation<D>::run_stage(int stage, int group) {
+WcsphScheme<D>::WcsphScheme(Simulation<D>& sim) : SchemeContext<D>(sim) {
+    const CaseConfig& cfg = cfg_;
+    continuity_ = cfg.density == DensityScheme::continuity;
+    delta_h_c0_ = continuity_ ? cfg.delta_sph * h_ * cfg.sound_speed : 0.0;
+    diffusion_ = DensityDiffusionParams<D>{Real(delta_h_c0_), cfg.density_diffusion,
+                                           Real(cfg.rho0) * momentum_.gravity /
+                                               Real(cfg.sound_speed * cfg.sound_speed)};
+    density_gradient_ = delta_h_c0_ > 0 && cfg.density_diffusion == DensityDiffusion::antuono;
+    riemann_dissipation_ = cfg.dissipation == Dissipation::riemann;
+    riemann_ = RiemannParams<D>{
+        momentum_.gravity, Real(cfg.rho0), Real(cfg.sound_speed),  Real(3),
+        momentum_.mu,      momentum_.h,    momentum_.wall_viscous, momentum_.p_floor};
+    halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_,
+                                            density_gradient_, skin() > 0);
+}
+
+enum class WcsphStage : std::uint8_t { density, walls, accel, kick, drift };
+
+template <int D>
+std::vector<typename WcsphScheme<D>::Stage> WcsphScheme<D>::stage_table() const {
+    using tasks::Reach;
+    // Before the first stage the state travels.
+    std::vector<Stage> rows;
+    rows.push_back({{"density", Reach::neighbourhood, What::pressure}, StageKind::density});
+    if (cfg_.walls == WallModel::dummy)
+        rows.push_back({{"walls", Reach::neighbourhood, What::walls}, StageKind::walls});
+    rows.push_back({{"accel", Reach::neighbourhood, std::nullopt}, StageKind::accel});
+    // The continuity rate reads the neighbours' kicked velocities; summation needs nothing.
+    rows.push_back(
+        {{"kick", Reach::self, continuity_ ? std::optional<What>(What::velocity) : std::nullopt},
+         StageKind::kick});
+    rows.push_back({{"drift", continuity_ ? Reach::neighbourhood : Reach::self, std::nullopt},
+                    StageKind::drift});
+    return rows;
+}
+
+template <int D>
+std::unique_ptr<tasks::StepGraph> WcsphScheme<D>::build_graph(const GraphSite& site) {
+    std::vector<StageRow<What>> rows;
+    stage_kinds_.clear();
+    for (const Stage& s : stage_table()) {
+        rows.push_back(s.row);
+        stage_kinds_.push_back(s.kind);
+    }
+    return graph_of_rows(
+        rows, std::optional<What>(What::state), [this](What w) { return halo_->name(w); },
+        [this](int stage, int group) { run_stage(stage, group); }, site, halo_.get(), halo_->what);
+}
+
+template <int D>
+void WcsphScheme<D>::run() {
+    halo_->assign_cells = rebuilt_;
+    graph_->run();
+}
+
+template <int D>
+void WcsphScheme<D>::run_stage(int stage, int group) {
     std::visit([&](const auto& k) { run_stage_with(k, stage, group); }, kernel_);
 }
 
 template <int D>
 template <class K>
-void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
+void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
     Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x), kernel.support()};
     NeighbourList<D>& list = lists_[static_cast<std::size_t>(group)];
     // The first stage finds the group's neighbours once; every later stage of the step reuses
@@ -149,7 +207,7 @@ void Simulation<D>::run_stage_with(const K& kernel, int stage, int group) {
     }
 }
 
-template void Simulation<2>::run_stage(int, int);
-template void Simulation<3>::run_stage(int, int);
+template class WcsphScheme<2>;
+template class WcsphScheme<3>;
 
 } // namespace sluice

@@ -1,14 +1,14 @@
-// The projection scheme's binding to the runtime (docs/PROJECTION.md): its stages as nodes of
-// step graphs and the step around the pressure solve (projection_solver.cpp). The formulas
-// are in include/sluice/physics/projection.hpp, wmls.hpp and drift.hpp.
+// The projection scheme's binding to the runtime (docs/PROJECTION.md): its stages, declared
+// once each as rows of its three graphs' tables, their bodies, and the step around the
+// pressure solve (projection_solver.cpp). The formulas are in
+// include/sluice/physics/projection.hpp, wmls.hpp and drift.hpp.
+#include "projection_scheme.hpp"
+
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/drift.hpp"
 #include "sluice/physics/projection.hpp"
 #include "sluice/physics/selected_operators.hpp"
 #include "sluice/physics/wmls.hpp"
-#include "sluice/solver/simulation.hpp"
-
-#include "projection_data.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -42,10 +42,24 @@ std::vector<Vec<D>> lattice_offsets(Real dx, Real re) {
     return out;
 }
 
+const char* field_name(ProjectionField f) {
+    switch (f) {
+    case ProjectionField::state:
+        return "state";
+    case ProjectionField::u_star:
+        return "u_star";
+    case ProjectionField::iterate:
+        return "iterate";
+    case ProjectionField::pressure:
+        return "pressure";
+    }
+    return "?";
+}
+
 } // namespace
 
 template <int D>
-void Simulation<D>::init_projection() {
+void ProjectionScheme<D>::init_projection() {
     proj_ = std::make_unique<ProjectionData<D>>();
     ProjectionData<D>& d = *proj_;
     d.re = Real(kernel_support_factor(cfg_.kernel) * h_);
@@ -65,61 +79,62 @@ void Simulation<D>::init_projection() {
             P_.rho[i] = Real(cfg_.rho0);
             P_.mass[i] = Real(cfg_.rho0) * volume;
         }
+    // Only the state exchange of these fields is used (reference positions: no skin).
+    halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, false, false, false);
     d.main_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
     d.solver_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
     d.correct_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
 }
 
 template <int D>
-void Simulation<D>::build_projection_graph() {
+std::unique_ptr<tasks::StepGraph> ProjectionScheme<D>::build_graph(const GraphSite& site) {
     using tasks::Reach;
+    using Row = StageRow<ProjectionField>;
+    using Field = ProjectionField;
     ProjectionData<D>& d = *proj_;
-    const std::size_t groups = topo_.neighbours.size();
-    group_limits_.assign(groups, {});
-    group_failure_.assign(groups, {});
-    group_speed_.assign(groups, 0.0);
-    lists_.resize(groups);
-    group_busy_.assign(groups, 0.0);
-    d.groups.resize(groups);
-    graph_steps_ = 0;
-
-    tasks::HaloWiring main, solver, correct;
-    if (comm_.parallel()) {
-        halo_->what.assign(1, HaloFields<D>::What::state); // ProjectionHalo delegates exchange 0
-        const auto boundary = boundary_groups();
-        for (tasks::HaloWiring* w : {&main, &solver, &correct}) {
-            w->peers = peers_;
-            w->boundary = boundary;
-        }
-        main.exchanges = {{"state", -1}, {"u_star", 0}};
-        main.data = d.main_halo.get();
-        solver.exchanges = {{"iterate", 0}};
-        solver.data = d.solver_halo.get();
-        correct.exchanges = {{"pressure", -1}};
-        correct.data = d.correct_halo.get();
-    }
+    d.groups.resize(site.neighbours->size());
+    // The stages of the three graphs, one row each.
+    const std::vector<Row> main{{"stencil", Reach::neighbourhood, Field::u_star},
+                                {"ppe_source", Reach::neighbourhood, std::nullopt}};
+    const std::vector<Row> solver{{"ppe_prepare", Reach::self, Field::iterate},
+                                  {"ppe_apply", Reach::neighbourhood, std::nullopt}};
+    const std::vector<Row> correct{{"correct", Reach::neighbourhood, std::nullopt}};
+    if (site.parallel)
+        halo_->what.assign(1, HaloFields<D>::What::state); // ProjectionHalo delegates the state
     // The old graphs live in the arena too.
-    graph_.reset();
     d.solver_graph.reset();
     d.correct_graph.reset();
-    graph_ = std::make_unique<tasks::StepGraph>(
-        std::vector<tasks::StageSpec>{{"stencil", Reach::neighbourhood},
-                                      {"ppe_source", Reach::neighbourhood}},
-        topo_.neighbours,
+    auto graph = graph_of_rows(
+        main, std::optional<Field>(Field::state), field_name,
         [this](int stage, int group) {
             std::visit([&](const auto& k) { projection_stage(k, stage, group); }, kernel_);
         },
-        std::move(main), arena_.get());
-    d.solver_graph = std::make_unique<tasks::StepGraph>(
-        std::vector<tasks::StageSpec>{{"ppe_prepare", Reach::self},
-                                      {"ppe_apply", Reach::neighbourhood}},
-        topo_.neighbours, [this](int stage, int group) { solver_stage(stage, group); },
-        std::move(solver), arena_.get());
-    d.correct_graph = std::make_unique<tasks::StepGraph>(
-        std::vector<tasks::StageSpec>{{"correct", Reach::neighbourhood}}, topo_.neighbours,
-        [this](int, int group) { correct_stage(group); }, std::move(correct), arena_.get());
-    for (tasks::StepGraph* g : {graph_.get(), d.solver_graph.get(), d.correct_graph.get()})
-        g->inject_receive_delay(receive_delay_);
+        site, d.main_halo.get(), main_fields_);
+    d.solver_graph = graph_of_rows(
+        solver, std::optional<Field>(), field_name,
+        [this](int stage, int group) { solver_stage(stage, group); }, site, d.solver_halo.get(),
+        solver_fields_);
+    d.correct_graph = graph_of_rows(
+        correct, std::optional<Field>(Field::pressure), field_name,
+        [this](int, int group) { correct_stage(group); }, site, d.correct_halo.get(),
+        correct_fields_);
+    return graph;
+}
+
+template <int D>
+typename ProjectionHalo<D>::Field ProjectionScheme<D>::halo_field(ProjectionField field) {
+    ProjectionData<D>& d = *proj_;
+    switch (field) {
+    case ProjectionField::state:
+        return {}; // HaloFields' state exchange
+    case ProjectionField::u_star:
+        return {nullptr, d.u_star.data()};
+    case ProjectionField::iterate:
+        return {d.y.data(), nullptr};
+    case ProjectionField::pressure:
+        return {P_.p.data(), nullptr};
+    }
+    return {};
 }
 
 // Stage 0 "stencil": neighbour list, WMLS coefficients, free surface, number density, wall
@@ -127,7 +142,7 @@ void Simulation<D>::build_projection_graph() {
 // fluid rows (P4, P5); it reads the neighbours' u*.
 template <int D>
 template <class K>
-void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
+void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group) {
     ProjectionData<D>& d = *proj_;
     if (d.failed)
         return;
@@ -274,7 +289,7 @@ void Simulation<D>::projection_stage(const K& kernel, int stage, int group) {
 // Stage "correct": velocity correction (P7) and position update (P8), state checks and the
 // time-step limits of the next step.
 template <int D>
-void Simulation<D>::correct_stage(int group) {
+void ProjectionScheme<D>::correct_stage(int group) {
     ProjectionData<D>& d = *proj_;
     const auto gi = static_cast<std::size_t>(group);
     const NeighbourList<D>& list = lists_[gi];
@@ -344,13 +359,18 @@ void Simulation<D>::correct_stage(int group) {
 }
 
 template <int D>
-void Simulation<D>::run_projection() {
+void ProjectionScheme<D>::run_projection() {
     ProjectionData<D>& d = *proj_;
     d.resize(P_.size());
     d.failed = false;
-    d.main_halo->fields = {{}, {nullptr, d.u_star.data()}};
-    d.solver_halo->fields = {{d.y.data(), nullptr}};
-    d.correct_halo->fields = {{P_.p.data(), nullptr}};
+    halo_->assign_cells = rebuilt_;
+    for (auto [halo, fields] : {std::pair{d.main_halo.get(), &main_fields_},
+                                std::pair{d.solver_halo.get(), &solver_fields_},
+                                std::pair{d.correct_halo.get(), &correct_fields_}}) {
+        halo->fields.clear();
+        for (ProjectionField f : *fields)
+            halo->fields.push_back(halo_field(f));
+    }
     for (tasks::StepGraph* g : {d.solver_graph.get(), d.correct_graph.get()})
         g->inject_receive_delay(receive_delay_);
     // A task that throws must not leave peers waiting: every rank runs every graph and every
@@ -377,25 +397,7 @@ void Simulation<D>::run_projection() {
         throw std::runtime_error(error);
 }
 
-template <int D>
-const PressureSolveRecord* Simulation<D>::last_pressure_solve() const {
-    return proj_ ? &proj_->last : nullptr;
-}
-
-template <int D>
-const PressureSolveTotals* Simulation<D>::pressure_solve_totals() const {
-    return proj_ ? &proj_->totals : nullptr;
-}
-
-#define SLUICE_PROJECTION_MEMBERS(D)                                                               \
-    template void Simulation<D>::init_projection();                                                \
-    template void Simulation<D>::build_projection_graph();                                         \
-    template void Simulation<D>::run_projection();                                                 \
-    template void Simulation<D>::correct_stage(int);                                               \
-    template const PressureSolveRecord* Simulation<D>::last_pressure_solve() const;                \
-    template const PressureSolveTotals* Simulation<D>::pressure_solve_totals() const;
-SLUICE_PROJECTION_MEMBERS(2)
-SLUICE_PROJECTION_MEMBERS(3)
-#undef SLUICE_PROJECTION_MEMBERS
+template class ProjectionScheme<2>;
+template class ProjectionScheme<3>;
 
 } // namespace sluice
