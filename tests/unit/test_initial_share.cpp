@@ -104,7 +104,8 @@ void check_case(const CaseConfig& cfg) {
                 CHECK(std::memcmp(&mine.mass[i], &all.mass[j], sizeof(Real)) == 0);
             }
             // Reserved exactly: appending the share never doubled an array.
-            CHECK(mine.x.capacity() == mine.size());
+            Particles<D>::for_each_array(
+                [&](auto member) { CHECK((mine.*member).capacity() == mine.size()); });
         }
         CHECK(total == all.size());
         CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
