@@ -5,9 +5,10 @@ Runs `sluice run CASE` once per rank count, each rank under `/usr/bin/time -f %M
 resident set, KiB, written to a file per rank), with snapshots and checkpoints, and prints per
 rank the peak and its ratio to the first rank count's peak. Where the binary writes them (from
 the parallel-HDF5 branch on), it also prints the rank log's `memory:` lines, VmHWM (peak) and
-VmRSS (now) after the initial state (every rank generates every particle today), after start-up
-(before the time loop), after the time loop (snapshots and checkpoints included) and at the
-end (the run's totals), so the share of the peak that each part sets is read off directly.
+VmRSS (now) after the initial state (from the distributed start on, each rank builds only its
+own particles), after start-up (before the time loop), after the time loop (snapshots and
+checkpoints included) and at the end (the run's totals), so the share of the peak that each
+part sets is read off directly.
 
     perf/memory/peak_rss.py                                   # 1 and 4 ranks, defaults below
     perf/memory/peak_rss.py --exe /tmp/sluice_main --ranks 1 4 --out /tmp/mem_main

@@ -247,7 +247,9 @@ double block_max_speed(const FluidBlock& b, int dimension) {
 }
 
 template <int D>
-void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
+ParticleId visit_fluid_blocks(const CaseConfig& cfg, const Eos& eos, ParticleId first_id,
+                              const InitialSink<D>& sink) {
+    ParticleId next_id = first_id;
     const double dx = cfg.dx;
     const double volume = std::pow(dx, D);
     Vec<D> g;
@@ -281,16 +283,26 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
             centre[d] = 0.5 * (b.lo[d] + b.hi[d]);
             half[d] = 0.5 * (b.hi[d] - b.lo[d]);
         }
-        for_each_lattice_point<D>(lo, n, dx, [&](Vec<D> x) {
+        // The settled height depends on the lattice row alone: computed once per row (the
+        // same call, hence the same bits), since the distributed start visits every site twice.
+        std::vector<Real> settled_row(settle ? static_cast<std::size_t>(n[up]) : 0);
+        std::vector<bool> row_done(settled_row.size(), false);
+        for_each_lattice_site<D>(lo, n, dx, [&](const std::array<int, D>& site, Vec<D> x) {
             Triple at{};
             for (int d = 0; d < D; ++d)
                 at[d] = x[d];
             if (!inside_block_shape(b, at, D))
                 return;
             const double lattice_up = x[up];
-            if (settle)
-                x[up] = Real(b.lo[up] + settled_height(eos, g_abs, sigma_total,
+            if (settle) {
+                const auto row = static_cast<std::size_t>(site[up]);
+                if (!row_done[row])
+                    settled_row[row] =
+                        Real(b.lo[up] + settled_height(eos, g_abs, sigma_total,
                                                        cfg.rho0 * (x[up] - b.lo[up])));
+                row_done[row] = true;
+                x[up] = settled_row[row];
+            }
             Vec<D> v;
             for (int d = 0; d < D; ++d)
                 v[d] = Real(b.velocity[d]);
@@ -334,14 +346,17 @@ void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
             // particles.jitter: displaced after the fields were sampled at the lattice site (the
             // displacement, at most 0.05 dx, only breaks the lattice's symmetry).
             for (int d = 0; d < D && cfg.jitter > 0; ++d)
-                x[d] += Real(cfg.jitter * dx * lattice_offset(P.size(), d));
-            P.push_back(static_cast<ParticleId>(P.size()), Kind::fluid, x, v, Real(rho), Real(m));
+                x[d] += Real(cfg.jitter * dx * lattice_offset(next_id, d));
+            sink({next_id++, Kind::fluid, x, v, Real(rho), Real(m)});
         });
     }
+    return next_id;
 }
 
 template <int D>
-void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
+ParticleId visit_wall_particles(const CaseConfig& cfg, int layers, ParticleId first_id,
+                                const InitialSink<D>& sink) {
+    ParticleId next_id = first_id;
     const double dx = cfg.dx;
     std::array<std::vector<double>, D> sites;
     std::array<AxisSites, D> axes;
@@ -356,8 +371,7 @@ void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
             inside_tank = inside_tank && k[d] >= axes[d].n_a && k[d] < axes[d].n_a + axes[d].mid;
         if (inside_tank)
             return;
-        P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(),
-                    Real(cfg.rho0), Real(mass));
+        sink({next_id++, Kind::wall, x, Vec<D>::Zero(), Real(cfg.rho0), Real(mass)});
     });
     // Solid obstacles: `layers` layers inside each face of the box.
     for (const WallBox& b : cfg.boxes) {
@@ -369,10 +383,28 @@ void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
         }
         for_each_site<D>(bs, [&](const std::array<int, D>& k, const Vec<D>& x) {
             if (in_box_shell<D>(k, bn, layers))
-                P.push_back(static_cast<ParticleId>(P.size()), Kind::wall, x, Vec<D>::Zero(),
-                            Real(cfg.rho0), Real(mass));
+                sink({next_id++, Kind::wall, x, Vec<D>::Zero(), Real(cfg.rho0), Real(mass)});
         });
     }
+    return next_id;
+}
+
+namespace {
+template <int D>
+InitialSink<D> append_to(Particles<D>& P) {
+    return
+        [&P](const InitialParticle<D>& q) { P.push_back(q.id, q.kind, q.x, q.v, q.rho, q.mass); };
+}
+} // namespace
+
+template <int D>
+void add_fluid_blocks(const CaseConfig& cfg, const Eos& eos, Particles<D>& P) {
+    visit_fluid_blocks<D>(cfg, eos, static_cast<ParticleId>(P.size()), append_to(P));
+}
+
+template <int D>
+void add_wall_particles(const CaseConfig& cfg, int layers, Particles<D>& P) {
+    visit_wall_particles<D>(cfg, layers, static_cast<ParticleId>(P.size()), append_to(P));
 }
 
 std::size_t count_fluid_particles(const CaseConfig& cfg) {
@@ -410,6 +442,14 @@ std::size_t count_wall_particles(const CaseConfig& cfg, int layers) {
     return outer - inner + boxes;
 }
 
+template ParticleId visit_fluid_blocks<2>(const CaseConfig&, const Eos&, ParticleId,
+                                          const InitialSink<2>&);
+template ParticleId visit_fluid_blocks<3>(const CaseConfig&, const Eos&, ParticleId,
+                                          const InitialSink<3>&);
+template ParticleId visit_wall_particles<2>(const CaseConfig&, int, ParticleId,
+                                            const InitialSink<2>&);
+template ParticleId visit_wall_particles<3>(const CaseConfig&, int, ParticleId,
+                                            const InitialSink<3>&);
 template void add_fluid_blocks<2>(const CaseConfig&, const Eos&, Particles<2>&);
 template void add_fluid_blocks<3>(const CaseConfig&, const Eos&, Particles<3>&);
 template void add_wall_particles<2>(const CaseConfig&, int, Particles<2>&);

@@ -1,6 +1,7 @@
 #include "sluice/solver/simulation.hpp"
 
 #include "sluice/io/errors.hpp"
+#include "sluice/solver/initial_share.hpp"
 #include "sluice/solver/initial_state.hpp"
 
 #include "schemes/projection/projection_scheme.hpp"
@@ -100,15 +101,10 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         TimeStepParams{h_, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl, cfg.force_cfl};
     planes_ = reflective_planes<D>(cfg);
 
-    add_fluid_blocks<D>(cfg, eos_, P_);
     const int layers = wall_layers(support, cfg.dx);
-    if (cfg.walls == WallModel::dummy)
-        add_wall_particles<D>(cfg, layers, P_);
     // A fluid particle may sit inside the dummy-wall layers for a moment; it has escaped only
     // once it is behind all of them.
     const Real escape_margin = cfg.walls == WallModel::dummy ? Real(layers * cfg.dx) : Real(0);
-    for (std::size_t i = 0; i < P_.size(); ++i)
-        P_.p[i] = eos_.pressure(P_.rho[i]);
 
     // The grid covers the domain; open axes get room for wall layers and one support more.
     domain_lo_ = to_vec<D>(cfg.domain_lo);
@@ -137,6 +133,14 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     } catch (const std::invalid_argument& e) {
         throw CaseError(cfg.source_file, "domain.periodic", e.what());
     }
+    // This rank builds only the particles of its part of the curve (a restart none: they come
+    // from the checkpoint); the largest initial speed is the whole case's.
+    const InitialShare share = initial_share<D>(cfg, eos_, layers, grid_, comm_.rank(),
+                                                comm_.size(), resume != nullptr ? nullptr : &P_);
+    layout_ = share.layout;
+    u_max_ = share.max_speed;
+    for (std::size_t i = 0; i < P_.size(); ++i)
+        P_.p[i] = eos_.pressure(P_.rho[i]);
 
     const TimeStepLimits rest = limits_at_rest();
     if (cfg.fixed_dt) {
@@ -152,8 +156,6 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         dt_ = rest.min();
     }
     limits_ = rest;
-    for (std::size_t i = 0; i < P_.size(); ++i)
-        u_max_ = std::max(u_max_, P_.v[i].norm());
     if (resume != nullptr) {
         // The case was checked above on its initial state, exactly as when the checkpoint's run
         // started; from here on the checkpoint's state replaces it.
@@ -217,10 +219,8 @@ TimeStepLimits Simulation<D>::limits_at_rest() const {
     double g = 0;
     for (int d = 0; d < D; ++d)
         g += cfg_.gravity[d] * cfg_.gravity[d];
-    Real vmax = 0;
-    for (std::size_t i = 0; i < P_.size(); ++i)
-        vmax = std::max(vmax, P_.v[i].norm());
-    return particle_time_step(ts_params_, scheme_->cfl_speed(), vmax, std::sqrt(g));
+    // u_max_ is the initial state's largest speed over every rank (initial_share).
+    return particle_time_step(ts_params_, scheme_->cfl_speed(), u_max_, std::sqrt(g));
 }
 
 template <int D>

@@ -1,7 +1,8 @@
-// The parts of Simulation<D> that share particles between ranks: the initial distribution,
-// the halo plan of a rebuild, migration to neighbouring ranks, the balancer (its window of busy
-// times and the rebalance, at a rebuild or between rebuilds), the distribution of a checkpoint's
-// shares at a restart, and the gather to rank 0 that tests use.
+// The parts of Simulation<D> that share particles between ranks: the peers of the initial cuts
+// (a fresh start builds only its own particles: initial_share.hpp), the distribution of a
+// checkpoint's shares at a restart, the halo plan of a rebuild, migration to neighbouring
+// ranks, the balancer (its window of busy times and the rebalance, at a rebuild or between
+// rebuilds), and the gather to rank 0 that tests use.
 // Pure data movement and bookkeeping; the step itself is in simulation.cpp.
 #include "sluice/solver/simulation.hpp"
 
@@ -17,8 +18,13 @@ template <int D>
 void Simulation<D>::distribute_initial_particles(bool shares) {
     if (!comm_.parallel())
         return;
-    // Either every rank generated the same particles, or (a restart) each holds a share of
-    // them; each ends with the cells of its part of the curve.
+    if (!shares) {
+        // A fresh start: initial_share built only this rank's particles, under layout_.
+        peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
+        return;
+    }
+    // A restart: each rank holds a share of the checkpoint's particles; each ends with the
+    // cells of its part of the curve, cut as one rank holding every particle would cut it.
     rebinner_(grid_, P_, ranges_, occupied_);
     if (cfg_.initial_decomposition == InitialDecomposition::key_range) {
         layout_ = tasks::cut_ranks_by_key(grid_, comm_.size());
@@ -27,28 +33,27 @@ void Simulation<D>::distribute_initial_particles(bool shares) {
         units.reserve(occupied_.size());
         for (const auto& c : occupied_)
             units.push_back({c.key, static_cast<double>(c.count)});
-        if (shares)
-            units = all_occupied_cells(units);
-        layout_ = tasks::cut_ranks(units, comm_.size());
+        layout_ = tasks::cut_ranks(all_occupied_cells(units), comm_.size());
     }
     peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
     std::vector<std::size_t> keep;
-    std::vector<tasks::Bytes> out(shares ? static_cast<std::size_t>(comm_.size()) : 0), in;
+    std::vector<tasks::Bytes> out(static_cast<std::size_t>(comm_.size())), in;
     for (const auto& c : occupied_) {
         const int owner = layout_.rank_of(c.key);
         for (std::uint32_t i = ranges_.begin[c.cell]; i < ranges_.end[c.cell]; ++i)
             if (owner == comm_.rank())
                 keep.push_back(i);
-            else if (shares)
+            else
                 messages::pack_particle(P_, i, out[static_cast<std::size_t>(owner)]);
     }
-    if (shares)
-        comm_.all_to_all(out, in);
+    comm_.all_to_all(out, in);
     P_.permute(keep);
     P_.resize(keep.size());
     // Arrival order does not matter: the rebin sorts by (cell key, id).
     for (const auto& b : in)
         messages::unpack_particles<D>(b, P_);
+    // The arrays not permuted kept the share's size, and appending may have doubled others.
+    P_.shrink_to_fit();
 }
 
 template <int D>

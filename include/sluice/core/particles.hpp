@@ -106,6 +106,18 @@ struct Particles {
         rho_next.resize(n, 0);
     }
 
+    // Capacity for n particles in every array (appending one by one then never reallocates).
+    void reserve(std::size_t n) {
+        for_each_array([&](auto member) { (this->*member).reserve(n); });
+    }
+
+    // Gives back the capacity beyond size() of every array: resize keeps it, so arrays that
+    // once held more particles (e.g. a checkpoint's share before the restart distributed it)
+    // would otherwise keep their largest size.
+    void shrink_to_fit() {
+        for_each_array([&](auto member) { (this->*member).shrink_to_fit(); });
+    }
+
     // Appends one particle with the given state; derived fields start at zero.
     void push_back(ParticleId pid, Kind k, const Vec<D>& pos, const Vec<D>& vel, Real density,
                    Real m) {

@@ -10,6 +10,7 @@
 #include "sluice/physics/initial_profiles.hpp"
 
 #include <cstddef>
+#include <functional>
 
 namespace sluice {
 
@@ -20,6 +21,27 @@ bool inside_block_shape(const FluidBlock& b, const Triple& x, int dimension);
 // Largest initial speed over block b (uniform velocity plus its profile), for time-step
 // estimates before any particle exists.
 double block_max_speed(const FluidBlock& b, int dimension);
+
+// One particle as the builders below make it; the derived fields start at zero.
+template <int D>
+struct InitialParticle {
+    ParticleId id;
+    Kind kind;
+    Vec<D> x, v;
+    Real rho, mass;
+};
+template <int D>
+using InitialSink = std::function<void(const InitialParticle<D>&)>;
+
+// The particles add_fluid_blocks / add_wall_particles append, in the same order with the same
+// ids (from first_id on) and the same bits, handed to `sink` instead of stored: the distributed
+// start (initial_share.hpp) counts them, then keeps only a rank's own. Return the next id.
+template <int D>
+ParticleId visit_fluid_blocks(const CaseConfig& cfg, const Eos& eos, ParticleId first_id,
+                              const InitialSink<D>& sink);
+template <int D>
+ParticleId visit_wall_particles(const CaseConfig& cfg, int layers, ParticleId first_id,
+                                const InitialSink<D>& sink);
 
 // Fluid particles of every block, ids 0..n-1 in block/lattice order.
 template <int D>

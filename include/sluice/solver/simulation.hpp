@@ -156,7 +156,8 @@ public:
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
 
 private:
-    // `shares`: every rank holds a share of the particles (a restart), not all of them.
+    // `shares`: every rank holds a share of a checkpoint's particles (a restart), sent here to
+    // their owners; otherwise each holds its own already (initial_share) and learns its peers.
     void distribute_initial_particles(bool shares);
     // Every rank's occupied cells (units of particle count) merged in curve order. Collective.
     [[nodiscard]] std::vector<tasks::CurveUnit>
