@@ -5,31 +5,23 @@
 #include "sluice/core/neighbour_census.hpp"
 #include "sluice/io/checkpoint.hpp"
 #include "sluice/io/errors.hpp"
-#include "sluice/io/probe_writer.hpp"
 #include "sluice/io/progress.hpp"
 #include "sluice/io/run_log.hpp"
 #include "sluice/io/snapshot_writer.hpp"
-#include "sluice/io/summary.hpp"
-#include "sluice/solver/output_schedule.hpp"
 #include "sluice/solver/simulation.hpp"
 
 #include "memory_use.hpp"
-#include "probe_sampling.hpp"
+#include "run_outputs.hpp"
 #include "run_report.hpp"
+#include "run_requests.hpp"
 #include "run_totals.hpp"
-#include "stop_signals.hpp"
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
 #include <chrono>
-#include <cmath>
-#include <csignal>
-#include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
-#include <limits>
-#include <nlohmann/json.hpp>
 #include <optional>
 
 namespace sluice {
@@ -67,9 +59,26 @@ void check_restart_folder(const CaseConfig& cfg, const std::string& out_dir,
     }
 }
 
+// The projection scheme's pressure-solve totals, and SOR's dropped relaxation, in the log.
+template <int D>
+void log_solver_totals(const Simulation<D>& sim, RunLog& log) {
+    const PressureSolveTotals* pt = sim.pressure_solve_totals();
+    if (pt == nullptr)
+        return;
+    if (pt->solves > 0)
+        log.info("pressure solves: {} steps, {:.1f} iterations per step on average, at most {}; "
+                 "largest final relative residual {:.3e}; {:.3f} s in the solver",
+                 pt->solves, static_cast<double>(pt->iterations) / static_cast<double>(pt->solves),
+                 pt->max_iterations, pt->max_residual, pt->seconds);
+    if (pt->relaxation_dropped > 0)
+        log.warn("SOR: the over-relaxed sweep diverged in {} of {} solves, which went on with "
+                 "relaxation 1 (docs/PROJECTION.md, \"SOR\"); a smaller projection.relaxation "
+                 "avoids the wasted sweeps",
+                 pt->relaxation_dropped, pt->solves);
+}
+
 template <int D>
 RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
-    namespace fs = std::filesystem;
     using Clock = std::chrono::steady_clock;
     SimulationOptions so;
     so.threads = threads;
@@ -92,10 +101,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     const long start_step = sim.steps();
     resume.reset();
 
-    const fs::path stop_file = fs::path(opts.out_dir) / "stop";
-    const std::string checkpoint_file = checkpoint_path(opts.out_dir);
     LogOptions lo;
-    lo.dir = (fs::path(opts.out_dir) / "logs").string();
+    lo.dir = (std::filesystem::path(opts.out_dir) / "logs").string();
     lo.rank = sim.comm().rank();
     lo.console = root;
     lo.quiet = opts.quiet;
@@ -114,62 +121,23 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     };
     log_memory("after the initial state");
 
-    std::unique_ptr<SnapshotWriter<D>> snapshots;
-    std::unique_ptr<ProbeWriter> probe_files;
-    if (root) {
-        fs::create_directories(opts.out_dir);
-        fs::remove(fs::path(opts.out_dir) / "summary.json"); // an old summary would look complete
-        fs::remove(stop_file);                               // it stopped an earlier run
-        if (!resumed)
-            fs::remove(checkpoint_file); // an earlier run's: its snapshots are going
-        discard_partial_checkpoint(checkpoint_file);
-    }
-    // Every rank writes its slice of each snapshot (rank 0 alone touches the folder).
-    if (cfg.snapshots) {
-        std::vector<typename SnapshotWriter<D>::Earlier> earlier;
-        for (std::size_t k = 0; k < start.snapshot_time.size(); ++k)
-            earlier.push_back({start.snapshot_time[k], start.snapshot_particles[k]});
-        snapshots = resumed ? std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields, earlier)
-                            : std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
-    }
-    if (root) {
-        probe_files =
-            resumed ? std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes, start.probe_bytes)
-                    : std::make_unique<ProbeWriter>(opts.out_dir, cfg.probes, D);
-    }
-
-    OutputSchedule schedule(cfg);
-    if (resumed)
-        schedule.resume(start, sim.time());
-    // Every rank takes the same decisions (same time). The probes are evaluated where the
-    // particles are (probe_sampling.hpp); each rank writes its own particles into a snapshot.
-    auto sample = [&](bool force) {
-        const double t = sim.time();
-        const OutputSchedule::Due due = schedule.due(t, force);
-        if (!due.probes.empty()) {
-            const auto rows = sample_probes(sim, due.probes);
-            if (root)
-                for (std::size_t n = 0; n < due.probes.size(); ++n)
-                    probe_files->write(due.probes[n], t, rows[n]);
-        }
-        if (due.snapshot) {
-            const std::string file = snapshots->write(sim.particles(), sim.owned(), t, sim.steps());
-            if (root)
-                log.debug("snapshot {} at t = {:.6g} s (step {})", file, t, sim.steps());
-        }
-        schedule.done(due, t);
-    };
+    RunOutputs<D> outputs(cfg, opts.out_dir, resumed ? &start : nullptr, sim.time(), root, log);
 
     RunResult result;
     // Neighbour pairs by kind at the start and the end (outside the timed loop, without a
     // gather: run_totals.hpp): the benchmarks turn them into achieved interactions per second
     // per stage.
-    const Real support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
-    const RunTotals at_start = run_totals<D>(sim, support);
+    RunFigures figures;
+    figures.support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+    figures.start_step = start_step;
+    figures.resumed = resumed;
+    figures.earlier_wall_seconds = start.wall_seconds;
+    figures.threads = threads;
+    const RunTotals at_start = run_totals<D>(sim, figures.support);
     result.particles = at_start.particles;
     result.fluid_particles = at_start.fluid;
     result.mass_initial = at_start.mass;
-    const NeighbourCensus census_start = at_start.census;
+    figures.census_start = at_start.census;
     log_memory("after start-up");
     const std::uint64_t total_particles = result.particles;
 
@@ -180,73 +148,25 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         return std::chrono::duration<double>(Clock::now() - t0).count();
     };
 
-    // Collective: every rank writes its particles; the rest is rank 0's.
-    auto write_checkpoint_now = [&] {
-        CheckpointHeader c;
-        if (!root) {
-            write_checkpoint<D>(checkpoint_file, c, sim.particles(), sim.owned());
-            return;
-        }
-        c.case_fingerprint = cfg.fingerprint;
-        c.ranks = sim.comm().size();
-        c.solver = sim.solver_state();
-        c.output.out_next = schedule.out_next();
-        c.output.last_output_time = schedule.last_output_time();
-        c.output.wall_seconds = start.wall_seconds + loop_seconds();
-        c.output.probe_next = schedule.probe_next();
-        c.output.probe_bytes = probe_files->bytes();
-        if (snapshots)
-            for (const auto& w : snapshots->written()) {
-                c.output.snapshot_time.push_back(w.time);
-                c.output.snapshot_particles.push_back(w.particles);
-            }
-        write_checkpoint<D>(checkpoint_file, c, sim.particles(), sim.owned());
-    };
-    // After a failed step every rank holds the state before it: write it for inspection
-    // (collective: every rank gets the error from the same step).
-    auto last_snapshot = [&](const std::string& label) {
-        if (!snapshots) // snapshots are off: this one is written all the same
-            snapshots = std::make_unique<SnapshotWriter<D>>(opts.out_dir, cfg.fields);
-        const std::string file =
-            snapshots->write(sim.particles(), sim.owned(), sim.time(), sim.steps());
-        return root ? fmt::format(", {} in {}", label, file) : std::string();
-    };
-
     Progress progress(cfg.end_time, opts.quiet || !root, opts.verbose);
     progress.log_to([&log](const std::string& line) { log.file_only(line); });
     t0 = Clock::now();
-    const StopSignals signals;
-    auto last_checkpoint = Clock::now(), last_stop_check = Clock::now();
-    bool stop_file_seen = false;
-    sample(false);
+    RunRequests requests(opts.out_dir, cfg.checkpoint_every_minutes, root);
+    outputs.sample(sim, false);
     while (sim.time() < cfg.end_time * (1 - 1e-12)) {
         // Requests go into the next step's reduction, so every rank acts on them together.
-        if (StopSignals::received() != 0)
-            sim.post_request(request_stop);
-        if (root) {
-            const auto now = Clock::now();
-            if (now - last_stop_check >= std::chrono::milliseconds(200)) { // few stat calls
-                last_stop_check = now;
-                stop_file_seen = fs::exists(stop_file);
-            }
-            if (stop_file_seen)
-                sim.post_request(request_stop);
-            if (cfg.checkpoint_every_minutes > 0 &&
-                std::chrono::duration<double>(now - last_checkpoint).count() >=
-                    60 * cfg.checkpoint_every_minutes)
-                sim.post_request(request_checkpoint);
-        }
+        requests.post(sim);
         try {
             sim.step();
         } catch (const RunError& e) {
             // Every rank got the error from the same step; the state is the last good one
             // (the failing step never swapped its buffers in).
-            const std::string where = last_snapshot("last good state");
+            const std::string where = outputs.last_snapshot(sim, "last good state");
             progress.finish();
             log.file_only(fmt::format("the run failed: {}{}", e.what(), where));
             throw RunError(std::string(e.what()) + where);
         } catch (const InternalError& e) {
-            const std::string where = last_snapshot("state before the failing step");
+            const std::string where = outputs.last_snapshot(sim, "state before the failing step");
             progress.finish();
             throw InternalError(std::string(e.what()) + where);
         }
@@ -261,34 +181,29 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         progress.update(sim.steps(), sim.time(), sim.dt(),
                         static_cast<double>(total_particles) *
                             static_cast<double>(sim.steps() - start_step) / wall);
-        sample(false);
-        const unsigned requests = sim.agreed_requests();
-        const bool stop = (requests & request_stop) != 0;
-        if (stop || (requests & request_checkpoint) != 0 ||
+        outputs.sample(sim, false);
+        const unsigned agreed = sim.agreed_requests();
+        const bool stop = (agreed & request_stop) != 0;
+        if (stop || (agreed & request_checkpoint) != 0 ||
             (cfg.checkpoint_every_steps > 0 && sim.steps() % cfg.checkpoint_every_steps == 0)) {
-            write_checkpoint_now();
-            last_checkpoint = Clock::now();
+            outputs.write_checkpoint(sim, start.wall_seconds + loop_seconds());
+            requests.checkpoint_written();
         }
         if (stop) {
             progress.finish();
             if (root) {
-                fs::remove(stop_file);
-                const char* why = StopSignals::received() == SIGTERM  ? "SIGTERM"
-                                  : StopSignals::received() == SIGINT ? "SIGINT"
-                                  : stop_file_seen                    ? "the stop file"
-                                                                      : "a signal to another rank";
-                result.stop_reason = why;
+                requests.remove_stop_file();
+                result.stop_reason = requests.stop_reason();
             }
             result.stopped = true;
             result.steps = sim.steps();
             result.simulated_time = sim.time();
             result.wall_seconds = loop_seconds();
-            result.checkpoint = checkpoint_file;
+            result.checkpoint = outputs.checkpoint_file();
             return result;
         }
     }
-    if (sim.time() != schedule.last_output_time())
-        sample(true);
+    outputs.finish(sim);
     progress.finish();
 
     result.wall_seconds = loop_seconds();
@@ -298,76 +213,18 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                                        static_cast<double>(result.steps - start_step) /
                                        result.wall_seconds;
     log_memory("after the time loop");
-    const RunTotals at_end = run_totals<D>(sim, support);
+    const RunTotals at_end = run_totals<D>(sim, figures.support);
     result.mass_final = at_end.mass;
-    const NeighbourCensus census_end = at_end.census;
+    figures.census_end = at_end.census;
     log_memory("at the end");
     if (!opts.trace_path.empty())
         sim.write_trace(opts.trace_path);
-    if (const PressureSolveTotals* pt = sim.pressure_solve_totals(); pt && pt->solves > 0)
-        log.info("pressure solves: {} steps, {:.1f} iterations per step on average, at most {}; "
-                 "largest final relative residual {:.3e}; {:.3f} s in the solver",
-                 pt->solves, static_cast<double>(pt->iterations) / static_cast<double>(pt->solves),
-                 pt->max_iterations, pt->max_residual, pt->seconds);
-    if (const PressureSolveTotals* pt = sim.pressure_solve_totals();
-        pt && pt->relaxation_dropped > 0)
-        log.warn("SOR: the over-relaxed sweep diverged in {} of {} solves, which went on with "
-                 "relaxation 1 (docs/PROJECTION.md, \"SOR\"); a smaller projection.relaxation "
-                 "avoids the wasted sweeps",
-                 pt->relaxation_dropped, pt->solves);
+    log_solver_totals(sim, log);
     log.info("done: {} steps to t = {:.6g} s in {:.2f} s wall, {:.3g} particle-steps/s, {} "
              "decompositions, {} rebalances",
              result.steps, result.simulated_time, result.wall_seconds,
              result.particle_steps_per_second, sim.decompositions(), sim.rebalances().size());
-
-    // Per-rank profile to rank 0.
-    const auto mine = profile_numbers(sim);
-    const auto gathered = sim.comm().gather(std::span<const std::byte>(
-        reinterpret_cast<const std::byte*>(mine.data()), mine.size() * sizeof(double)));
-    const double rebin_seconds = sim.rebin_seconds_total(); // rank 0's
-    if (!root)
-        return result;
-
-    std::vector<std::vector<double>> per_rank;
-    for (const auto& b : gathered) {
-        std::vector<double> v(b.size() / sizeof(double));
-        std::memcpy(v.data(), b.data(), b.size());
-        per_rank.push_back(std::move(v));
-    }
-    const auto names = sim.stage_names();
-    const nlohmann::json parallel =
-        parallel_report(names, per_rank, !opts.quiet && sim.comm().parallel());
-
-    nlohmann::json extra;
-    const auto& graph = sim.graph();
-    extra["stage_busy_seconds"] = parallel["total"]["stage_busy_seconds"];
-    extra["rebin_seconds"] = rebin_seconds;
-    extra["cell_groups"] = graph.group_count();
-    extra["decompositions"] = sim.decompositions();
-    extra["list_rebuilds"] = sim.list_rebuilds();
-    extra["last_dt"] = sim.dt();
-    if (resumed)
-        extra["restarted_from_step"] = start_step;
-    // wall_seconds covers this segment; this, every segment since step 0.
-    extra["wall_seconds_all_segments"] = start.wall_seconds + result.wall_seconds;
-    extra["parallel"] = parallel;
-    extra["neighbours"] = {{"support", support},
-                           {"start", census_json(census_start)},
-                           {"end", census_json(census_end)}};
-    nlohmann::json rebal = nlohmann::json::array();
-    for (const auto& r : sim.rebalances())
-        rebal.push_back({{"step", r.step},
-                         {"imbalance_before", r.imbalance_before},
-                         {"predicted_after", r.predicted_after},
-                         {"particles_moved", r.particles_moved},
-                         {"seconds", r.seconds},
-                         {"at_rebuild", r.at_rebuild}});
-    extra["rebalances"] = rebal;
-    nlohmann::json hist = nlohmann::json::array();
-    for (const auto& h : sim.balance_history())
-        hist.push_back({{"step", h.step}, {"imbalance", h.imbalance}});
-    extra["imbalance_history"] = hist;
-    write_summary(opts.out_dir, cfg, result, threads, sim.comm().size(), extra);
+    write_run_summary(sim, cfg, opts.out_dir, opts.quiet, result, figures);
     return result;
 }
 

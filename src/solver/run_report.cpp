@@ -1,7 +1,11 @@
 // The end-of-run report (run_report.hpp).
 #include "run_report.hpp"
 
+#include "sluice/io/summary.hpp"
 #include "sluice/tasks/comm.hpp"
+
+#include <cstring>
+#include <span>
 
 #include <fmt/format.h>
 
@@ -104,7 +108,64 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
     return out;
 }
 
+template <int D>
+void write_run_summary(const Simulation<D>& sim, const CaseConfig& cfg, const std::string& out_dir,
+                       bool quiet, const RunResult& result, const RunFigures& f) {
+    // Per-rank profile to rank 0.
+    const auto mine = profile_numbers(sim);
+    const auto gathered = sim.comm().gather(std::span<const std::byte>(
+        reinterpret_cast<const std::byte*>(mine.data()), mine.size() * sizeof(double)));
+    const double rebin_seconds = sim.rebin_seconds_total(); // rank 0's
+    if (sim.comm().rank() != 0)
+        return;
+
+    std::vector<std::vector<double>> per_rank;
+    for (const auto& b : gathered) {
+        std::vector<double> v(b.size() / sizeof(double));
+        std::memcpy(v.data(), b.data(), b.size());
+        per_rank.push_back(std::move(v));
+    }
+    const auto names = sim.stage_names();
+    const nlohmann::json parallel =
+        parallel_report(names, per_rank, !quiet && sim.comm().parallel());
+
+    nlohmann::json extra;
+    const auto& graph = sim.graph();
+    extra["stage_busy_seconds"] = parallel["total"]["stage_busy_seconds"];
+    extra["rebin_seconds"] = rebin_seconds;
+    extra["cell_groups"] = graph.group_count();
+    extra["decompositions"] = sim.decompositions();
+    extra["list_rebuilds"] = sim.list_rebuilds();
+    extra["last_dt"] = sim.dt();
+    if (f.resumed)
+        extra["restarted_from_step"] = f.start_step;
+    // wall_seconds covers this segment; this, every segment since step 0.
+    extra["wall_seconds_all_segments"] = f.earlier_wall_seconds + result.wall_seconds;
+    extra["parallel"] = parallel;
+    extra["neighbours"] = {{"support", f.support},
+                           {"start", census_json(f.census_start)},
+                           {"end", census_json(f.census_end)}};
+    nlohmann::json rebal = nlohmann::json::array();
+    for (const auto& r : sim.rebalances())
+        rebal.push_back({{"step", r.step},
+                         {"imbalance_before", r.imbalance_before},
+                         {"predicted_after", r.predicted_after},
+                         {"particles_moved", r.particles_moved},
+                         {"seconds", r.seconds},
+                         {"at_rebuild", r.at_rebuild}});
+    extra["rebalances"] = rebal;
+    nlohmann::json hist = nlohmann::json::array();
+    for (const auto& h : sim.balance_history())
+        hist.push_back({{"step", h.step}, {"imbalance", h.imbalance}});
+    extra["imbalance_history"] = hist;
+    write_summary(out_dir, cfg, result, f.threads, sim.comm().size(), extra);
+}
+
 template std::vector<double> profile_numbers<2>(const Simulation<2>&);
 template std::vector<double> profile_numbers<3>(const Simulation<3>&);
+template void write_run_summary<2>(const Simulation<2>&, const CaseConfig&, const std::string&,
+                                   bool, const RunResult&, const RunFigures&);
+template void write_run_summary<3>(const Simulation<3>&, const CaseConfig&, const std::string&,
+                                   bool, const RunResult&, const RunFigures&);
 
 } // namespace sluice
