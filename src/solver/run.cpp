@@ -155,7 +155,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     outputs.sample(sim, false);
     while (sim.time() < cfg.end_time * (1 - 1e-12)) {
         // Requests go into the next step's reduction, so every rank acts on them together.
-        requests.post(sim);
+        sim.post_request(requests.pending());
         try {
             sim.step();
         } catch (const RunError& e) {
