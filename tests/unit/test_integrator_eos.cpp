@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace sluice;
 
@@ -60,4 +61,34 @@ TEST_CASE("Time-step limits: the seed 000 3-D case at c = 350 m/s needs about 7 
     CHECK(l.acoustic == doctest::Approx(7.14e-6).epsilon(1e-2));
     CHECK(l.min() == l.acoustic);
     CHECK(l.min() < 1e-3); // the seed's own dt = 1 ms is far above it
+}
+
+TEST_CASE("Time-step limits from the extremes equal the min over the particles, bit for bit") {
+    // The drift stage keeps the largest c + |v| and |a|^2 and divides once (TimeStepExtremes);
+    // it must give exactly what the per-particle limits' minimum gave.
+    const TimeStepParams prm{0.0141, 1e-6, 0.2, 0.125, 0.25};
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> c(40.0, 120.0), u(0.0, 9.0), a(0.0, 400.0);
+    for (int trial = 0; trial < 50; ++trial) {
+        TimeStepLimits direct;
+        TimeStepExtremes ext;
+        const int n = 1 + trial * 7;
+        for (int k = 0; k < n; ++k) {
+            const Vec<2> acc(a(rng) - 200.0, a(rng) - 200.0);
+            const double ci = c(rng), ui = u(rng);
+            direct = min(direct, particle_time_step(prm, ci, ui, acc.norm()));
+            ext.add(ci, ui, acc.squaredNorm());
+        }
+        const TimeStepLimits l = ext.limits(prm);
+        CHECK(l.acoustic == direct.acoustic);
+        CHECK(l.viscous == direct.viscous);
+        CHECK(l.force == direct.force);
+    }
+    // No particle: no limit, as the per-particle minimum over nothing.
+    CHECK(TimeStepExtremes{}.limits(prm).min() == std::numeric_limits<double>::infinity());
+    // At rest without acceleration the force limit stays open.
+    TimeStepExtremes rest;
+    rest.add(50.0, 0.0, 0.0);
+    CHECK(rest.limits(prm).force == std::numeric_limits<double>::infinity());
+    CHECK(rest.limits(prm).acoustic == prm.cfl * prm.h / 50.0);
 }

@@ -58,3 +58,36 @@ TEST_CASE("each kind of fault is named with its value and the limit") {
     CHECK(contains(fast, "a speed of 10.0001 m/s"));
     CHECK(contains(fast, "limits.max_speed = 10 m/s"));
 }
+
+TEST_CASE("state_healthy, the drift's fast test, agrees with state_fault on every case above") {
+    const auto b = bounds();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    struct State {
+        Vec<2> x, v;
+        double rho;
+    };
+    const State states[] = {
+        {Vec<2>(1.0, 0.5), Vec<2>(3.0, -4.0), 1000.0},
+        {Vec<2>(0.0, -0.1), Vec<2>(6.0, 8.0), 10.0},
+        {Vec<2>(2.0, 1.0), Vec<2>(0.0, 0.0), 2000.0},
+        {Vec<2>(-5.0, 0.5), Vec<2>(0.0, 0.0), 1000.0},
+        {Vec<2>(nan, 0.5), Vec<2>(0, 0), 1000.0},
+        {Vec<2>(1.0, 0.5), Vec<2>(0, inf), 1000.0},
+        {Vec<2>(1.0, 0.5), Vec<2>(0, 0), nan},
+        {Vec<2>(1.0, 1.0 + 1e-12), Vec<2>(0, 0), 1000.0},
+        {Vec<2>(1.0, -0.2), Vec<2>(0, 0), 1000.0},
+        {Vec<2>(1.0, 0.5), Vec<2>(0, 0), -3.0},
+        {Vec<2>(1.0, 0.5), Vec<2>(0, 0), 9.5},
+        {Vec<2>(1.0, 0.5), Vec<2>(0, 0), 2000.5},
+        {Vec<2>(1.0, 0.5), Vec<2>(6.0, 8.0001), 1000.0},
+        {Vec<2>(1.0, 0.5), Vec<2>(0, 0), 0.0},
+    };
+    int healthy = 0;
+    for (const State& s : states) {
+        const bool fast = state_healthy(b, s.x, s.v, s.rho);
+        CHECK(fast == state_fault(b, s.x, s.v, s.rho).empty());
+        healthy += fast ? 1 : 0;
+    }
+    CHECK(healthy == 4);
+}

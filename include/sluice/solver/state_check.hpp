@@ -19,6 +19,19 @@ struct StateBounds {
     Real min_density = 0, max_density = 0; // [kg/m^3]
 };
 
+// Whether the state passes every test of state_fault below (the hot path of a step's drift:
+// only an unhealthy particle pays for the message).
+template <int D>
+[[nodiscard]] inline bool state_healthy(const StateBounds<D>& b, const Vec<D>& x, const Vec<D>& v,
+                                        Real rho) {
+    if (!x.allFinite() || !v.allFinite() || !std::isfinite(rho))
+        return false;
+    for (int d = 0; d < D; ++d)
+        if (!b.periodic[static_cast<std::size_t>(d)] && (x[d] < b.lo[d] || x[d] > b.hi[d]))
+            return false;
+    return rho > 0 && rho >= b.min_density && rho <= b.max_density && !(v.norm() > b.max_speed);
+}
+
 // Empty when the state is healthy; otherwise the quantity that went wrong, in words, e.g.
 // "a speed of 52.1 m/s (limits.max_speed = 40 m/s)".
 template <int D>

@@ -155,7 +155,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
             throw std::runtime_error(fmt::format("deliberate failure of rank {} in step {} "
                                                  "(--debug-fail-rank/--debug-fail-step)",
                                                  comm_.rank(), steps_ + 1));
-        TimeStepLimits lim;
+        TimeStepExtremes extremes;
         const Real dt = Real(dt_);
         Real speed = 0, disp2 = 0;
         std::string failure;
@@ -182,11 +182,11 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                 P_.x_next[i] = x;
                 P_.v_next[i] = v;
                 P_.rho_next[i] = rho;
-                lim = min(lim, particle_time_step(ts_params_, eos_.sound_speed(rho), v.norm(),
-                                                  P_.a[i].norm()));
-                speed = std::max(speed, v.norm());
+                const Real v_norm = v.norm();
+                extremes.add(eos_.sound_speed(rho), v_norm, P_.a[i].squaredNorm());
+                speed = std::max(speed, v_norm);
                 disp2 = std::max(disp2, (x - P_.x_ref[i]).squaredNorm());
-                if (failure.empty()) {
+                if (failure.empty() && !state_healthy(bounds_, x, v, rho)) {
                     const std::string what = state_fault(bounds_, x, v, rho);
                     if (!what.empty())
                         failure = fmt::format(
@@ -198,7 +198,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                 }
             }
         }
-        group_limits_[static_cast<std::size_t>(group)] = lim;
+        group_limits_[static_cast<std::size_t>(group)] = extremes.limits(ts_params_);
         group_speed_[static_cast<std::size_t>(group)] = speed;
         group_disp2_[static_cast<std::size_t>(group)] = disp2;
         group_failure_[static_cast<std::size_t>(group)] = std::move(failure);
