@@ -2,6 +2,7 @@
 """Speed against error: sweep resolution and scheme options on four validation cases.
 
     perf/speed_vs_error/run.sh [--quick] [--cases dam_break,hydrostatic,taylor_green,poiseuille]
+                               [--variants baseline,projection]
                                [--threads 1] [--out DIR] [--nice N] [--label TEXT]
                                [--sluice-float build/release-float/sluice]
 
@@ -202,10 +203,14 @@ def main() -> int:
                     help="a single-precision build (preset release-float): adds the variant "
                          "'single precision' (the baseline run with this binary)")
     ap.add_argument("--nice", type=int, default=0, help="run sluice under nice -n N")
+    ap.add_argument("--variants", default="",
+                    help="comma-separated subset of the variants' labels (default: all), "
+                         "e.g. 'baseline,projection'")
     ap.add_argument("--label", default="",
                     help="note for the plots' subtitle, e.g. 'machine under load'")
     args = ap.parse_args()
     mode = "quick" if args.quick else "full"
+    wanted = {v.strip() for v in args.variants.split(",") if v.strip()}
     chosen = [c.strip() for c in args.cases.split(",") if c.strip()]
     for c in chosen:
         if c not in CASES:
@@ -234,6 +239,8 @@ def main() -> int:
               + ("" if proj else "; projection scheme not offered by this build, skipped"))
         rows = []
         runs = [(label, var, sluice) for label, var in variants(base, args.quick, proj)]
+        if wanted:
+            runs = [r for r in runs if r[0] in wanted]
         if sluice_float:
             runs.append((SINGLE, {}, sluice_float))
         for label, var, binary in runs:
