@@ -16,15 +16,14 @@ namespace {
 constexpr Real two_pi = 2 * std::numbers::pi_v<Real>;
 constexpr Real gap_tolerance = Real(1e-9); // rad
 
-// Open arc (centre - half, centre + half) on a circle parametrised by angle.
-struct Arc {
-    Real centre, half;
-};
+using Arc = SurfaceArc;
+using Cap = SurfaceCap;
+using Intervals = std::vector<std::pair<Real, Real>>;
 
 // True when the arcs cover the whole circle (up to gap_tolerance).
-bool arcs_cover_circle(const std::vector<Arc>& arcs) {
-    std::vector<std::pair<Real, Real>> iv; // intervals inside [0, 2 pi)
-    iv.reserve(2 * arcs.size() + 2);
+// iv: reused buffer of the intervals inside [0, 2 pi).
+bool arcs_cover_circle(const std::vector<Arc>& arcs, Intervals& iv) {
+    iv.clear();
     for (const Arc& a : arcs) {
         if (a.half >= std::numbers::pi_v<Real>)
             return true;
@@ -49,12 +48,6 @@ bool arcs_cover_circle(const std::vector<Arc>& arcs) {
     return reach >= two_pi - gap_tolerance;
 }
 
-// Cap of the unit sphere of directions: {n : n . axis > cos_half}.
-struct Cap {
-    Vec<3> axis;
-    Real cos_half, sin_half;
-};
-
 // The part of cap j's boundary circle inside the open cap k, as an arc in the angle t of
 // n(t) = cos_j axis_j + sin_j (cos t e1 + sin t e2). Returns false when it is empty.
 // n(t) . axis_k = A + B cos(t - t0) > cos_k.
@@ -73,8 +66,10 @@ bool boundary_arc(const Cap& j, const Vec<3>& e1, const Vec<3>& e2, const Cap& k
     return true;
 }
 
-bool sphere_uncovered(std::span<const Vec<3>> offsets, Real diameter) {
-    std::vector<Cap> caps;
+bool sphere_uncovered(std::span<const Vec<3>> offsets, Real diameter,
+                      FreeSurfaceScratch<3>& scratch) {
+    std::vector<Cap>& caps = scratch.caps;
+    caps.clear();
     for (const Vec<3>& d : offsets) {
         const Real r = d.norm();
         if (r <= 0 || r >= diameter)
@@ -84,7 +79,7 @@ bool sphere_uncovered(std::span<const Vec<3>> offsets, Real diameter) {
     }
     if (caps.empty())
         return true;
-    std::vector<Arc> arcs;
+    std::vector<Arc>& arcs = scratch.arcs;
     for (std::size_t j = 0; j < caps.size(); ++j) {
         // Orthonormal frame of the plane normal to axis_j.
         const Vec<3>& u = caps[j].axis;
@@ -97,34 +92,37 @@ bool sphere_uncovered(std::span<const Vec<3>> offsets, Real diameter) {
             if (k != j && boundary_arc(caps[j], e1, e2, caps[k], a))
                 arcs.push_back(a);
         }
-        if (!arcs_cover_circle(arcs))
+        if (!arcs_cover_circle(arcs, scratch.intervals))
             return true;
     }
     return false;
 }
 
-bool circle_uncovered(std::span<const Vec<2>> offsets, Real diameter) {
-    std::vector<Arc> arcs;
+bool circle_uncovered(std::span<const Vec<2>> offsets, Real diameter,
+                      FreeSurfaceScratch<2>& scratch) {
+    std::vector<Arc>& arcs = scratch.arcs;
+    arcs.clear();
     for (const Vec<2>& d : offsets) {
         const Real r = d.norm();
         if (r <= 0 || r >= diameter)
             continue;
         arcs.push_back({std::atan2(d[1], d[0]), std::acos(r / diameter)});
     }
-    return !arcs_cover_circle(arcs);
+    return !arcs_cover_circle(arcs, scratch.intervals);
 }
 
 } // namespace
 
 template <int D>
-bool is_free_surface(std::span<const Vec<D>> offsets, Real diameter) {
+bool is_free_surface(std::span<const Vec<D>> offsets, Real diameter,
+                     FreeSurfaceScratch<D>& scratch) {
     if constexpr (D == 2)
-        return circle_uncovered(offsets, diameter);
+        return circle_uncovered(offsets, diameter, scratch);
     else
-        return sphere_uncovered(offsets, diameter);
+        return sphere_uncovered(offsets, diameter, scratch);
 }
 
-template bool is_free_surface<2>(std::span<const Vec<2>>, Real);
-template bool is_free_surface<3>(std::span<const Vec<3>>, Real);
+template bool is_free_surface<2>(std::span<const Vec<2>>, Real, FreeSurfaceScratch<2>&);
+template bool is_free_surface<3>(std::span<const Vec<3>>, Real, FreeSurfaceScratch<3>&);
 
 } // namespace sluice::physics

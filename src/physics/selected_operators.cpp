@@ -43,12 +43,12 @@ selected_operators(std::span<const Vec<D>> offsets, const OperatorSelections& se
         const auto index = [&](std::size_t m) {
             return all ? m : static_cast<std::size_t>(scratch.pick[m]);
         };
-        const WmlsStencil<D> st = wmls_stencil<D>(set, re, weight);
+        const WmlsFit st = wmls_stencil_into<D>(set, re, weight, scratch.wmls);
         for (std::size_t m = 0; m < set.size(); ++m) {
             if (grad)
-                gradient[index(m)] = st.gradient.col(static_cast<Eigen::Index>(m));
+                gradient[index(m)] = scratch.wmls.gradient[m];
             if (lap)
-                laplacian[index(m)] = st.laplacian(0, static_cast<Eigen::Index>(m));
+                laplacian[index(m)] = scratch.wmls.laplacian[m];
         }
         if (grad && !linear_gradient.empty()) {
             scratch.linear.resize(set.size());
@@ -67,8 +67,9 @@ selected_operators(std::span<const Vec<D>> offsets, const OperatorSelections& se
         out.laplacian_ok = fit(selections.laplacian, false, true);
         out.ok = grad_ok && out.laplacian_ok;
     }
-    out.free_surface = is_free_surface<D>(
-        operator_set<D>(offsets, selections.free_surface, re, dx, scratch), surface_diameter);
+    out.free_surface =
+        is_free_surface<D>(operator_set<D>(offsets, selections.free_surface, re, dx, scratch),
+                           surface_diameter, scratch.surface);
     return out;
 }
 

@@ -48,58 +48,79 @@ bool estimable(const Eigen::JacobiSVD<MatX>& svd, Eigen::Index r, const VecX& g)
 
 } // namespace
 
+namespace {
+
+// Row j of the scaled design matrix into B (N x M, column-major, leading dimension N).
+template <int D>
+void fill_design_row(Real* B, Eigen::Index N, Eigen::Index j, const Vec<D>& d, Real sqrt_w,
+                     Real re) {
+    const Vec<D> s = d / re;
+    Eigen::Index c = 0;
+    for (int a = 0; a < D; ++a)
+        B[j + N * c++] = sqrt_w * s[a];
+    for (int a = 0; a < D; ++a)
+        B[j + N * c++] = sqrt_w * Real(0.5) * s[a] * s[a];
+    for (int a = 0; a < D; ++a)
+        for (int b = a + 1; b < D; ++b)
+            B[j + N * c++] = sqrt_w * s[a] * s[b];
+}
+
+} // namespace
+
 template <int D>
 MatX wmls_design_matrix(std::span<const Vec<D>> offsets, Real re, LsWeight weight) {
     const auto N = static_cast<Eigen::Index>(offsets.size());
     MatX B(N, wmls_unknowns<D>);
     for (Eigen::Index j = 0; j < N; ++j) {
         const Vec<D>& d = offsets[static_cast<std::size_t>(j)];
-        const Real sqrt_w = std::sqrt(ls_weight(d.norm(), re, weight));
-        const Vec<D> s = d / re;
-        int c = 0;
-        for (int a = 0; a < D; ++a)
-            B(j, c++) = sqrt_w * s[a];
-        for (int a = 0; a < D; ++a)
-            B(j, c++) = sqrt_w * Real(0.5) * s[a] * s[a];
-        for (int a = 0; a < D; ++a)
-            for (int b = a + 1; b < D; ++b)
-                B(j, c++) = sqrt_w * s[a] * s[b];
+        fill_design_row<D>(B.data(), N, j, d, std::sqrt(ls_weight(d.norm(), re, weight)), re);
     }
     return B;
 }
 
 template <int D>
-WmlsStencil<D> wmls_stencil(std::span<const Vec<D>> offsets, Real re, LsWeight weight) {
+WmlsFit wmls_stencil_into(std::span<const Vec<D>> offsets, Real re, LsWeight weight,
+                          WmlsWorkspace<D>& ws) {
     constexpr int M = wmls_unknowns<D>;
     const auto N = static_cast<Eigen::Index>(offsets.size());
-    WmlsStencil<D> out;
-    out.gradient.setZero(D, N);
-    out.laplacian.setZero(1, N);
+    const auto n = offsets.size();
+    WmlsFit out;
+    ws.gradient.assign(n, Vec<D>::Zero());
+    ws.laplacian.assign(n, Real(0));
     if (N == 0 || !(re > 0))
         return out;
 
     const Real inv_re = 1 / re;
-    VecX sqrt_w(N);
-    for (Eigen::Index j = 0; j < N; ++j)
-        sqrt_w[j] = std::sqrt(ls_weight(offsets[static_cast<std::size_t>(j)].norm(), re, weight));
-    const MatX B = wmls_design_matrix<D>(offsets, re, weight);
-    const MatX G = target_functionals<D>();
-    MatX C(N, D + 1); // coefficients of the scaled functionals, before sqrt(w) and unscaling
+    ws.sqrt_w.resize(n);
+    ws.design.resize(n * M);
+    ws.coefficients.resize(n * (D + 1));
+    for (Eigen::Index j = 0; j < N; ++j) {
+        const Vec<D>& d = offsets[static_cast<std::size_t>(j)];
+        ws.sqrt_w[static_cast<std::size_t>(j)] = std::sqrt(ls_weight(d.norm(), re, weight));
+        fill_design_row<D>(ws.design.data(), N, j, d, ws.sqrt_w[static_cast<std::size_t>(j)], re);
+    }
+    const Eigen::Map<const MatX> B(ws.design.data(), N, M);
+    if (ws.targets.size() == 0)
+        ws.targets = target_functionals<D>();
+    const MatX& G = ws.targets;
+    // Coefficients of the scaled functionals, before sqrt(w) and unscaling.
+    Eigen::Map<MatX> C(ws.coefficients.data(), N, D + 1);
 
     // Regular path: a~ = P R^-1 Q^T (W^1/2 df), so g^T a~ = (Q [R^-T P^T g; 0])^T (W^1/2 df).
-    Eigen::ColPivHouseholderQR<MatX> qr(B);
+    auto& qr = ws.qr;
+    qr.compute(B);
     qr.setThreshold(wmls_rank_tolerance);
     out.rank = static_cast<int>(qr.rank());
     if (out.rank == M) {
-        MatX Y = qr.colsPermutation().transpose() * G;
+        ws.y = qr.colsPermutation().transpose() * G;
         qr.matrixR()
             .topLeftCorner(M, M)
             .template triangularView<Eigen::Upper>()
             .transpose()
-            .solveInPlace(Y);
+            .solveInPlace(ws.y);
         C.setZero();
-        C.topRows(M) = Y;
-        C.applyOnTheLeft(qr.householderQ());
+        C.topRows(M) = ws.y;
+        qr.householderQ().applyThisOnTheLeft(C, ws.householder);
         out.ok = true;
     } else {
         // Degenerate stencil (too few neighbours, collinear/coplanar or coincident). Truncated SVD
@@ -131,9 +152,27 @@ WmlsStencil<D> wmls_stencil(std::span<const Vec<D>> offsets, Real re, LsWeight w
     }
 
     for (Eigen::Index j = 0; j < N; ++j) {
-        out.gradient.col(j) = (sqrt_w[j] * inv_re) * C.row(j).head(D).transpose();
-        out.laplacian(0, j) = sqrt_w[j] * inv_re * inv_re * C(j, D);
+        const auto u = static_cast<std::size_t>(j);
+        ws.gradient[u] = (ws.sqrt_w[u] * inv_re) * C.row(j).head(D).transpose();
+        ws.laplacian[u] = ws.sqrt_w[u] * inv_re * inv_re * C(j, D);
     }
+    return out;
+}
+
+template <int D>
+WmlsStencil<D> wmls_stencil(std::span<const Vec<D>> offsets, Real re, LsWeight weight) {
+    WmlsWorkspace<D> ws;
+    const WmlsFit fit = wmls_stencil_into<D>(offsets, re, weight, ws);
+    const auto N = static_cast<Eigen::Index>(offsets.size());
+    WmlsStencil<D> out;
+    out.gradient.resize(D, N);
+    out.laplacian.resize(1, N);
+    for (Eigen::Index j = 0; j < N; ++j) {
+        out.gradient.col(j) = ws.gradient[static_cast<std::size_t>(j)];
+        out.laplacian(0, j) = ws.laplacian[static_cast<std::size_t>(j)];
+    }
+    out.ok = fit.ok;
+    out.rank = fit.rank;
     return out;
 }
 
@@ -157,6 +196,8 @@ DiffResult<D> wmls_derivatives(std::span<const Vec<D>> offsets, std::span<const 
 
 template MatX wmls_design_matrix<2>(std::span<const Vec<2>>, Real, LsWeight);
 template MatX wmls_design_matrix<3>(std::span<const Vec<3>>, Real, LsWeight);
+template WmlsFit wmls_stencil_into<2>(std::span<const Vec<2>>, Real, LsWeight, WmlsWorkspace<2>&);
+template WmlsFit wmls_stencil_into<3>(std::span<const Vec<3>>, Real, LsWeight, WmlsWorkspace<3>&);
 template WmlsStencil<2> wmls_stencil<2>(std::span<const Vec<2>>, Real, LsWeight);
 template WmlsStencil<3> wmls_stencil<3>(std::span<const Vec<3>>, Real, LsWeight);
 template DiffResult<2> apply_stencil<2>(const WmlsStencil<2>&, std::span<const Real>);

@@ -311,3 +311,55 @@ TEST_CASE("First-order gradient: hand-computed stencils, linear exactness, singu
         CHECK(c[1] == Vec<2>(7, 7));
     }
 }
+
+namespace {
+
+// One workspace through stencils of changing size, full and degenerate (truncated SVD), in
+// turn: each result must be bitwise a fresh fit's (nothing of the last stencil leaks into the
+// next: stale rows, targets or Householder scratch) and exact on a quadratic.
+template <int D>
+void check_reused_workspace() {
+    std::mt19937_64 rng(2026 + D);
+    const Real re = 0.31;
+    WmlsWorkspace<D> ws;
+    for (const int n : {40, 12, 60, 3, 25, 2, 41, 40}) {
+        CAPTURE(n);
+        const auto offsets = random_offsets<D>(rng, n, Real(0.95) * re);
+        const WmlsFit fit = wmls_stencil_into<D>(offsets, re, LsWeight::pnu_mps, ws);
+        const WmlsStencil<D> fresh = wmls_stencil<D>(offsets, re, LsWeight::pnu_mps);
+        CHECK(fit.ok == fresh.ok);
+        CHECK(fit.rank == fresh.rank);
+        REQUIRE(ws.gradient.size() == offsets.size());
+        int same = 0;
+        for (std::size_t j = 0; j < offsets.size(); ++j) {
+            const auto k = static_cast<Eigen::Index>(j);
+            same +=
+                ws.gradient[j] == fresh.gradient.col(k) && ws.laplacian[j] == fresh.laplacian(0, k)
+                    ? 1
+                    : 0;
+        }
+        CHECK(same == n);
+        if (n < wmls_unknowns<D>) {
+            CHECK_FALSE(fit.ok); // fewer neighbours than unknowns: the SVD path
+            continue;
+        }
+        REQUIRE(fit.ok);
+        const Quadratic<D> q = random_quadratic<D>(rng);
+        Vec<D> grad = Vec<D>::Zero();
+        Real lap = 0;
+        for (std::size_t j = 0; j < offsets.size(); ++j) {
+            const Real df = q(offsets[j]) - q(Vec<D>::Zero());
+            grad += ws.gradient[j] * df;
+            lap += ws.laplacian[j] * df;
+        }
+        CHECK((grad - q.gradient(Vec<D>::Zero())).norm() < 1e-9);
+        CHECK(std::abs(lap - q.laplacian()) < 1e-8);
+    }
+}
+
+} // namespace
+
+TEST_CASE("A reused workspace gives bitwise the fresh fit's coefficients, 2-D and 3-D") {
+    check_reused_workspace<2>();
+    check_reused_workspace<3>();
+}

@@ -18,14 +18,42 @@
 #include "sluice/core/types.hpp"
 
 #include <span>
+#include <utility>
+#include <vector>
 
 namespace sluice::physics {
 
+// Open arc (centre - half, centre + half) on a circle parametrised by angle.
+struct SurfaceArc {
+    Real centre, half;
+};
+
+// Cap of the unit sphere of directions: {n : n . axis > cos_half}.
+struct SurfaceCap {
+    Vec<3> axis;
+    Real cos_half, sin_half;
+};
+
+// Buffers of the test reused from particle to particle (one per task: nothing is shared).
+template <int D>
+struct FreeSurfaceScratch {
+    std::vector<SurfaceArc> arcs;
+    std::vector<std::pair<Real, Real>> intervals;
+    std::vector<SurfaceCap> caps;
+};
+
 // offsets: x_j - x_i of the neighbours (any list containing all within `diameter`).
 template <int D>
-bool is_free_surface(std::span<const Vec<D>> offsets, Real diameter);
+bool is_free_surface(std::span<const Vec<D>> offsets, Real diameter,
+                     FreeSurfaceScratch<D>& scratch);
 
-extern template bool is_free_surface<2>(std::span<const Vec<2>>, Real);
-extern template bool is_free_surface<3>(std::span<const Vec<3>>, Real);
+template <int D>
+bool is_free_surface(std::span<const Vec<D>> offsets, Real diameter) {
+    FreeSurfaceScratch<D> scratch;
+    return is_free_surface<D>(offsets, diameter, scratch);
+}
+
+extern template bool is_free_surface<2>(std::span<const Vec<2>>, Real, FreeSurfaceScratch<2>&);
+extern template bool is_free_surface<3>(std::span<const Vec<3>>, Real, FreeSurfaceScratch<3>&);
 
 } // namespace sluice::physics

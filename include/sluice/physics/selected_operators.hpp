@@ -12,8 +12,10 @@
 // a convex-hull selection are the given offsets within its candidate radius: a candidate
 // radius beyond re selects among the particles within re.
 #include "sluice/core/types.hpp"
+#include "sluice/physics/free_surface.hpp"
 #include "sluice/physics/ls_weight.hpp"
 #include "sluice/physics/options.hpp"
+#include "sluice/physics/wmls.hpp"
 
 #include <span>
 #include <vector>
@@ -35,6 +37,8 @@ struct SelectedOperatorScratch {
     std::vector<Vec<D>> sub;
     std::vector<int> pick;
     std::vector<Vec<D>> linear;
+    WmlsWorkspace<D> wmls;
+    FreeSurfaceScratch<D> surface;
 };
 
 template <int D>
