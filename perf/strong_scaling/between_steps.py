@@ -83,6 +83,7 @@ def figures(rank, skip, reduce_entry):
     graphs = gaps = 0.0
     by_kind = defaultdict(float)
     other = 0.0
+    raw = defaultdict(float)  # work slices whole, even where a message covers them
     n_gaps = 0
     for s, nxt in zip(steps, steps[1:]):
         graphs += last[s] - first[s]
@@ -97,9 +98,12 @@ def figures(rank, skip, reduce_entry):
             named += [(a, b) for kk, a, b in rank["main"] if kk == k]
             by_kind[k] += covered(named, lo, hi) - before
         other += (hi - lo) - covered(named, lo, hi)
+        for k in ("bookkeeping", "rebuild"):
+            raw[k] += covered([(a, b) for kk, a, b in rank["main"] if kk == k], lo, hi)
     return {"steps": len(steps) - 1, "loop_s": loop, "graphs_s": graphs, "between_s": gaps,
             "between_share": gaps / loop if loop > 0 else 0.0,
-            "by_kind_s": dict(by_kind), "other_s": other, "gaps": n_gaps}
+            "by_kind_s": dict(by_kind), "other_s": other, "gaps": n_gaps,
+            "work_whole_s": dict(raw)}
 
 
 def reduce_skew(ranks):
@@ -160,6 +164,10 @@ def main():
             t = v["other_s"] if k == "other" else v["by_kind_s"].get(k, 0.0)
             if t > 0:
                 print(f"  {k:<12} {ms(t):8.3f} ms/step {pct(t):6.2f} %")
+        for k, t in v["work_whole_s"].items():
+            if t > v["by_kind_s"].get(k, 0.0) + 1e-9:
+                print(f"  ({k} whole: {ms(t):.3f} ms/step, the rest of it while a message "
+                      "was in flight)")
         print(f"  reduce: waiting for the last rank {ms(wait[r]):.3f} ms/step, after it "
               f"{ms(after[r]):.3f} ms/step")
 
