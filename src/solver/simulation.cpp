@@ -335,6 +335,8 @@ void Simulation<D>::step() {
         task_error = e.what();
     }
     const double t_graph = tasks::clock_seconds();
+    // The report leaves now; the bookkeeping below runs while it travels.
+    post_step_report(task_error);
     // The stage layout is fixed for a case, so totals carry over when the graph is rebuilt.
     stage_busy_.resize(static_cast<std::size_t>(graph_->stage_count()), 0.0);
     for (int s = 0; s < graph_->stage_count(); ++s)
@@ -352,8 +354,10 @@ void Simulation<D>::step() {
         trace_->add_step(steps_ + 1, *graph_, between_);
     }
     between_.clear();
+    if (trace_)
+        trace_->add_work(steps_ + 2, "bookkeeping", t_graph, tasks::clock_seconds());
 
-    reduce_step_results(task_error); // throws on every rank if anything failed on any
+    agree_on_step(); // throws on every rank if anything failed on any
     P_.swap_buffers();
     time_ += dt_;
     ++steps_;
@@ -366,9 +370,12 @@ void Simulation<D>::step() {
     rebuilt_ = skin_ <= 0 || disp2_max_ > 0.25 * skin_ * skin_;
     if (rebuilt_) {
         const auto t0 = std::chrono::steady_clock::now();
+        const double t1 = tasks::clock_seconds();
         rebuild();
         rebin_seconds_ +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (trace_)
+            trace_->add_work(steps_ + 1, "rebuild", t1, tasks::clock_seconds());
     } else if (balance_due_ == BalanceDue::now) {
         rebuilt_ = rebalance_between_rebuilds();
     }

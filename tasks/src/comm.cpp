@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace sluice::tasks {
 
@@ -121,6 +122,64 @@ std::vector<Bytes> Comm::all_gather(std::span<const std::byte> mine) const {
     for (std::size_t r = 0; r < counts.size(); ++r)
         out[r].assign(all.begin() + disp[r], all.begin() + disp[r] + counts[r]);
     return out;
+}
+
+struct PendingAllGather::Impl {
+    Bytes mine, all;
+    int ranks = 1;
+    MPI_Request request = MPI_REQUEST_NULL;
+    bool active = false;
+};
+
+PendingAllGather::PendingAllGather() : impl_(std::make_unique<Impl>()) {}
+PendingAllGather::PendingAllGather(PendingAllGather&&) noexcept = default;
+PendingAllGather& PendingAllGather::operator=(PendingAllGather&& other) noexcept {
+    if (this != &other) {
+        if (active())
+            (void)wait();
+        impl_ = std::move(other.impl_);
+    }
+    return *this;
+}
+PendingAllGather::~PendingAllGather() {
+    if (active())
+        (void)wait();
+}
+
+bool PendingAllGather::active() const {
+    return impl_ && impl_->active;
+}
+
+std::vector<Bytes> PendingAllGather::wait() {
+    if (!active())
+        throw std::logic_error("PendingAllGather::wait: nothing in flight");
+    if (impl_->request != MPI_REQUEST_NULL)
+        MPI_Wait(&impl_->request, MPI_STATUS_IGNORE);
+    impl_->active = false;
+    const std::size_t each = impl_->mine.size();
+    std::vector<Bytes> out(static_cast<std::size_t>(impl_->ranks));
+    for (std::size_t r = 0; r < out.size(); ++r)
+        out[r].assign(impl_->all.begin() + static_cast<std::ptrdiff_t>(r * each),
+                      impl_->all.begin() + static_cast<std::ptrdiff_t>((r + 1) * each));
+    return out;
+}
+
+PendingAllGather Comm::start_all_gather(std::span<const std::byte> mine) const {
+    PendingAllGather p;
+    PendingAllGather::Impl& d = *p.impl_;
+    d.mine.assign(mine.begin(), mine.end());
+    d.ranks = size_;
+    d.active = true;
+    if (!parallel()) {
+        d.all = d.mine;
+        return p;
+    }
+    d.all.resize(d.mine.size() * static_cast<std::size_t>(size_));
+    const int n = to_int(d.mine.size());
+    MPI_Iallgather(d.mine.data(), n, MPI_BYTE, d.all.data(), n, MPI_BYTE, MPI_COMM_WORLD,
+                   &d.request);
+    count_sent(d.mine.size() * static_cast<std::size_t>(size_ - 1));
+    return p;
 }
 
 std::vector<Bytes> Comm::gather(std::span<const std::byte> mine, int root) const {

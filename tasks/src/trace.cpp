@@ -64,6 +64,10 @@ void TraceRecorder::add_event(const std::string& name, double begin, double end)
     slice(name, kMpiTrack, begin, end, "");
 }
 
+void TraceRecorder::add_work(long step, const std::string& name, double begin, double end) {
+    slice(name, kMpiTrack, begin, end, fmt::format(R"("step":{})", step));
+}
+
 void TraceRecorder::write(const Comm& comm, const std::string& path) const {
     std::string mine = json_;
     // Track names: "rank r" processes, "worker k" and "MPI, main thread" threads.

@@ -18,6 +18,7 @@
 #include "sluice/solver/halo_plan.hpp"
 #include "sluice/solver/pressure_solve.hpp"
 #include "sluice/solver/state_check.hpp"
+#include "sluice/solver/step_report.hpp"
 #include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
 #include "sluice/tasks/profile.hpp"
@@ -177,7 +178,11 @@ private:
     bool rebalance_between_rebuilds();
     void plan_halo();
     [[nodiscard]] std::vector<std::vector<int>> boundary_groups() const;
-    void reduce_step_results(const std::string& task_error);
+    // The step's agreement between ranks (step_agreement.cpp): this rank's report leaves as
+    // soon as the graph is done; agree_on_step() collects every rank's and throws on every
+    // rank if any failed.
+    void post_step_report(const std::string& task_error);
+    void agree_on_step();
     void build_graph();
 
     // The scheme's stage bodies read and write the state below through this view.
@@ -241,6 +246,7 @@ private:
     std::unique_ptr<tasks::TraceRecorder> trace_;
     double receive_delay_ = 0;
     unsigned requests_local_ = 0, requests_agreed_ = 0;
+    std::optional<PendingStepReport> report_; // between post_step_report and agree_on_step
 
     // Balancer.
     std::vector<double> group_busy_; // per group, summed since the graph was built

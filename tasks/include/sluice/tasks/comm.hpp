@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,6 +29,29 @@ private:
     bool owns_ = false;
 };
 
+// An all-gather in flight (MPI_Iallgather): started by Comm::start_all_gather, completed by
+// wait(). Every rank must contribute the same number of bytes. Destroying one in flight waits
+// for it (every rank started it, so it completes).
+class PendingAllGather {
+public:
+    PendingAllGather();
+    ~PendingAllGather();
+    PendingAllGather(PendingAllGather&&) noexcept;
+    PendingAllGather& operator=(PendingAllGather&&) noexcept;
+    PendingAllGather(const PendingAllGather&) = delete;
+    PendingAllGather& operator=(const PendingAllGather&) = delete;
+
+    // Started and not yet waited for.
+    [[nodiscard]] bool active() const;
+    // Completes it; every rank's contribution in rank order.
+    [[nodiscard]] std::vector<Bytes> wait();
+
+private:
+    friend class Comm;
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
 class Comm {
 public:
     // MPI_COMM_WORLD, or a one-rank world when MPI is not initialised.
@@ -48,6 +72,10 @@ public:
 
     // Each rank contributes `mine`; every rank gets all contributions in rank order.
     [[nodiscard]] std::vector<Bytes> all_gather(std::span<const std::byte> mine) const;
+
+    // The same for contributions of one size on every rank, without waiting: the rank goes on
+    // while the messages travel and collects them with PendingAllGather::wait().
+    [[nodiscard]] PendingAllGather start_all_gather(std::span<const std::byte> mine) const;
 
     // Rank `root` gets every rank's contribution in rank order (others get an empty vector).
     [[nodiscard]] std::vector<Bytes> gather(std::span<const std::byte> mine, int root = 0) const;

@@ -19,6 +19,8 @@ public:
 
     void add_step(long step, const StepGraph& g, const std::vector<MessageRecord>& between);
     void add_event(const std::string& name, double begin, double end); // e.g. a rebalance
+    // The main thread's own work between two graphs, counted in the window of `step`.
+    void add_work(long step, const std::string& name, double begin, double end);
 
     // Gathers every rank's events to rank 0, which writes `path`. Collective.
     void write(const Comm& comm, const std::string& path) const;
