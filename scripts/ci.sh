@@ -39,8 +39,9 @@ asan_unit_tests=(test_case_reader test_case_check test_checkpoint test_snapshot_
                  test_migration test_step_agreement)
 asan_tests="^(cli_bad_input|$(IFS='|'; echo "${asan_unit_tests[*]}"))\$"
 asan_full_tests="^(cli_.*|mpi_.*|$(IFS='|'; echo "${asan_unit_tests[*]}"))\$"
-tsan_targets=(test_decomposition test_rank_layout test_graph_neighbour_sums tsan_missing_edge)
-tsan_tests="^(test_decomposition|test_rank_layout|test_graph_neighbour_sums|tsan_.*)\$"
+tsan_targets=(test_decomposition test_rank_layout test_graph_neighbour_sums test_balance_policy
+              tsan_missing_edge)
+tsan_tests="^(test_decomposition|test_rank_layout|test_graph_neighbour_sums|test_balance_policy|tsan_.*)\$"
 tsan_full_targets=("${tsan_targets[@]}" test_thread_invariance test_halo_wiring test_migration
                    test_step_agreement)
 

@@ -190,8 +190,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
                                  : std::max(1, std::min(allowed, tbb::info::default_concurrency()) -
                                                    (comm_.parallel() ? 1 : 0));
     arena_ = std::make_unique<tbb::task_arena>(threads_ + (comm_.parallel() ? 1 : 0), 1);
-    window_busy_.assign(static_cast<std::size_t>(comm_.size()), 0.0);
-    cut_busy_ = window_busy_;
+    balance_ = tasks::BalancePolicy(
+        {cfg.rebalance_window, cfg.rebalance_threshold, cfg.rebalance_every}, comm_.size());
     scheme_->start();
 
     // A restart sorts, distributes and groups the particles by the positions of the last
@@ -286,13 +286,13 @@ void Simulation<D>::rebuild() {
     // where it was sorted), halo plans and groups stay, and no particle changes owner.
     P_.resize(owned_); // drop the halo copies: they are received afresh next step
     if (comm_.parallel()) {
-        const auto cut = balance_due_ != BalanceDue::no ? plan_rebalance() : std::nullopt;
+        const auto cut = balance_.due() != tasks::BalanceDue::no ? plan_rebalance() : std::nullopt;
         if (cut)
             apply_rebalance(*cut, true);
         else
             migrate_to_neighbours();
     }
-    balance_due_ = BalanceDue::no;
+    balance_.clear_due();
     rebin_and_decompose();
     std::copy(P_.x.begin(), P_.x.end(), P_.x_ref.begin());
 }
@@ -365,7 +365,7 @@ void Simulation<D>::step() {
     if (!cfg_.fixed_dt)
         dt_ = limits_.min();
     if (comm_.parallel())
-        update_balance_window(last_busy_);
+        balance_.add_step(steps_, last_busy_);
     // The lists stay valid while every particle is within skin/2 of where they were built.
     rebuilt_ = skin_ <= 0 || disp2_max_ > 0.25 * skin_ * skin_;
     if (rebuilt_) {
@@ -376,7 +376,7 @@ void Simulation<D>::step() {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         if (trace_)
             trace_->add_work(steps_ + 1, "rebuild", t1, tasks::clock_seconds());
-    } else if (balance_due_ == BalanceDue::now) {
+    } else if (balance_.due() == tasks::BalanceDue::now) {
         rebuilt_ = rebalance_between_rebuilds();
     }
     profile_.between_wall += tasks::clock_seconds() - t_graph;

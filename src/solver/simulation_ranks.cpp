@@ -1,8 +1,9 @@
 // The parts of Simulation<D> that share particles between ranks: the peers of the initial cuts
 // (a fresh start builds only its own particles: initial_share.hpp), the distribution of a
 // checkpoint's shares at a restart, the halo plan of a rebuild, migration to neighbouring
-// ranks, the balancer (its window of busy times and the rebalance, at a rebuild or between
-// rebuilds), and the gather to rank 0 that tests use.
+// ranks, the rebalance (the costs gathered for the balancer's policy, tasks/balance_policy.hpp,
+// and the move to its cuts, at a rebuild or between rebuilds), and the gather to rank 0 that
+// tests use.
 // Pure data movement and bookkeeping; the step itself is in simulation.cpp.
 #include "sluice/solver/simulation.hpp"
 
@@ -187,40 +188,7 @@ void Simulation<D>::migrate_to_neighbours() {
 }
 
 template <int D>
-void Simulation<D>::update_balance_window(const std::vector<double>& busy_per_rank) {
-    for (std::size_t r = 0; r < window_busy_.size(); ++r) {
-        window_busy_[r] += busy_per_rank[r];
-        cut_busy_[r] += busy_per_rank[r];
-    }
-    ++window_steps_;
-    ++steps_since_rebalance_;
-    const bool window_full = window_steps_ >= cfg_.rebalance_window;
-    const bool every = cfg_.rebalance_every > 0 && steps_since_rebalance_ >= cfg_.rebalance_every;
-    if (!window_full && !every)
-        return;
-    const double measured = tasks::imbalance(window_busy_);
-    if (window_full)
-        balance_history_.push_back({steps_, measured});
-    // Acted on at the next rebuild, where moving particles costs little. Between rebuilds a
-    // rebalance costs an extra rebuild, and on many ranks one window's imbalance is mostly
-    // noise (the slowest rank changes from window to window; 10-step windows of the 2-D
-    // 232k-particle case on 16 ranks read 1.08-1.38 for a run whose total is 1.02): only an
-    // imbalance that holds, by twice the threshold, over every step since the cuts last moved
-    // (two windows at least) is acted on before the next rebuild. A flow at rest may never
-    // rebuild: the 3-D peer dam break starts at 1.4-1.9, its first rebuild far away.
-    if (every || measured > 1 + cfg_.rebalance_threshold) {
-        balance_measured_ = measured;
-        const bool sustained = steps_since_rebalance_ >= 2 * cfg_.rebalance_window &&
-                               tasks::imbalance(cut_busy_) > 1 + 2 * cfg_.rebalance_threshold;
-        balance_due_ = every || sustained ? BalanceDue::now : BalanceDue::at_rebuild;
-    }
-    std::fill(window_busy_.begin(), window_busy_.end(), 0.0);
-    window_steps_ = 0;
-}
-
-template <int D>
 std::optional<typename Simulation<D>::PlannedCut> Simulation<D>::plan_rebalance() {
-    const bool every = cfg_.rebalance_every > 0 && steps_since_rebalance_ >= cfg_.rebalance_every;
     // Every rank offers its occupied cells as units of the curve, each with its share (by
     // particle count) of its group's measured cost per step; all ranks compute the same new cut
     // points from the same gathered list.
@@ -231,11 +199,9 @@ std::optional<typename Simulation<D>::PlannedCut> Simulation<D>::plan_rebalance(
         double particles = 0;
         for (CellIndex c : cells)
             particles += ranges_.end[c] - ranges_.begin[c];
-        const bool timed = cfg_.balance_cost == BalanceCost::time && graph_steps_ > 0;
-        const double per_particle = timed && particles > 0
-                                        ? group_busy_[static_cast<std::size_t>(g)] /
-                                              static_cast<double>(graph_steps_) / particles
-                                        : 1.0;
+        const double per_particle = tasks::cost_per_particle(
+            cfg_.balance_cost == BalanceCost::time, group_busy_[static_cast<std::size_t>(g)],
+            graph_steps_, particles);
         for (CellIndex c : cells) {
             tasks::put(mine, grid_.morton(grid_.unlinear(c)));
             tasks::put(mine, per_particle * (ranges_.end[c] - ranges_.begin[c]));
@@ -251,26 +217,17 @@ std::optional<typename Simulation<D>::PlannedCut> Simulation<D>::plan_rebalance(
             units.push_back(u);
         }
     }
-    PlannedCut cut{tasks::cut_ranks(units, comm_.size()), 0.0, t0};
-    std::vector<double> predicted(static_cast<std::size_t>(comm_.size()), 0.0);
-    std::vector<double> now = predicted;
-    for (const auto& u : units) {
-        predicted[static_cast<std::size_t>(cut.layout.rank_of(u.key))] += u.cost;
-        now[static_cast<std::size_t>(layout_.rank_of(u.key))] += u.cost;
-    }
-    cut.predicted = tasks::imbalance(predicted);
-    // Moving particles costs a step's worth of communication: only when it pays. Judged on
-    // the same per-unit costs for the present and the new cuts, so noise cancels.
-    if (!every && cut.predicted > tasks::imbalance(now) - cfg_.rebalance_threshold / 2)
+    auto plan = balance_.plan(units, layout_);
+    if (!plan)
         return std::nullopt;
-    return cut;
+    return PlannedCut{std::move(*plan), t0};
 }
 
 template <int D>
 void Simulation<D>::apply_rebalance(const PlannedCut& cut, bool at_rebuild) {
     // Here P_ holds exactly this rank's particles. Every particle goes to its owner under the
     // new cuts.
-    const tasks::RankLayout& next = cut.layout;
+    const tasks::RankLayout& next = cut.plan.layout;
     std::vector<tasks::Bytes> out(static_cast<std::size_t>(comm_.size())), in;
     std::vector<std::size_t> keep;
     std::uint64_t moved = 0;
@@ -297,25 +254,24 @@ void Simulation<D>::apply_rebalance(const PlannedCut& cut, bool at_rebuild) {
     layout_ = next;
     peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
     force_regroup_ = true;
-    steps_since_rebalance_ = 0;
-    std::fill(cut_busy_.begin(), cut_busy_.end(), 0.0);
+    balance_.cuts_moved();
     const double t1 = tasks::clock_seconds();
     rebalances_.push_back(
-        {steps_, balance_measured_, cut.predicted, moved_total, t1 - cut.t0, at_rebuild});
+        {steps_, balance_.measured(), cut.plan.predicted, moved_total, t1 - cut.t0, at_rebuild});
     between_.push_back({"rebalance", -1, true, 0, cut.t0, t1});
     if (opts_.log_rebalances && comm_.rank() == 0)
         fmt::print(stderr,
                    "sluice: rebalance at step {}{}: imbalance {:.3f} -> {:.3f} (predicted), {} "
                    "particles moved, {:.1f} ms\n",
-                   steps_, at_rebuild ? "" : " (between rebuilds)", balance_measured_,
-                   cut.predicted, moved_total, (t1 - cut.t0) * 1e3);
+                   steps_, at_rebuild ? "" : " (between rebuilds)", balance_.measured(),
+                   cut.plan.predicted, moved_total, (t1 - cut.t0) * 1e3);
 }
 
 template <int D>
 bool Simulation<D>::rebalance_between_rebuilds() {
     // Without this, a rebalance found due waits for the next rebuild, which in a flow that
     // moves slowly (or not at all) can be hundreds of steps away, or never come.
-    balance_due_ = BalanceDue::no;
+    balance_.clear_due();
     const auto cut = plan_rebalance();
     if (!cut)
         return false;
@@ -355,7 +311,6 @@ Particles<D> Simulation<D>::gather_particles() const {
     template void Simulation<D>::plan_halo();                                                      \
     template std::vector<std::vector<int>> Simulation<D>::boundary_groups() const;                 \
     template void Simulation<D>::migrate_to_neighbours();                                          \
-    template void Simulation<D>::update_balance_window(const std::vector<double>&);                \
     template std::optional<Simulation<D>::PlannedCut> Simulation<D>::plan_rebalance();             \
     template void Simulation<D>::apply_rebalance(const PlannedCut&, bool);                         \
     template bool Simulation<D>::rebalance_between_rebuilds();                                     \

@@ -19,6 +19,7 @@
 #include "sluice/solver/pressure_solve.hpp"
 #include "sluice/solver/state_check.hpp"
 #include "sluice/solver/step_report.hpp"
+#include "sluice/tasks/balance_policy.hpp"
 #include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
 #include "sluice/tasks/profile.hpp"
@@ -65,10 +66,7 @@ struct RebalanceRecord {
 };
 
 // Balance measured over one window of steps (the "imbalance curve").
-struct BalanceSample {
-    long step = 0;
-    double imbalance = 0;
-};
+using BalanceSample = tasks::BalanceSample;
 
 template <int D>
 class StepScheme; // src/solver/step_scheme.hpp
@@ -122,7 +120,7 @@ public:
     [[nodiscard]] const tasks::RankProfile& profile() const { return profile_; }
     [[nodiscard]] const std::vector<RebalanceRecord>& rebalances() const { return rebalances_; }
     [[nodiscard]] const std::vector<BalanceSample>& balance_history() const {
-        return balance_history_;
+        return balance_.history();
     }
     // Writes the --trace file (collective); no-op unless opts.trace.
     void write_trace(const std::string& path) const;
@@ -166,12 +164,10 @@ private:
     void rebin_and_decompose();
     void rebuild();
     void migrate_to_neighbours();
-    void update_balance_window(const std::vector<double>& busy_per_rank);
     // New cut points between ranks, gathered and decided identically on every rank.
     struct PlannedCut {
-        tasks::RankLayout layout;
-        double predicted = 0; // imbalance under the new cuts, from the measured group costs
-        double t0 = 0;        // when planning began (the rebalance's time includes it)
+        tasks::BalancePlan plan;
+        double t0 = 0; // when planning began (the rebalance's time includes it)
     };
     std::optional<PlannedCut> plan_rebalance();
     void apply_rebalance(const PlannedCut& cut, bool at_rebuild);
@@ -248,20 +244,12 @@ private:
     unsigned requests_local_ = 0, requests_agreed_ = 0;
     std::optional<PendingStepReport> report_; // between post_step_report and agree_on_step
 
-    // Balancer.
+    // Balancer: this rank measures and moves, the policy decides.
     std::vector<double> group_busy_; // per group, summed since the graph was built
     long graph_steps_ = 0;
-    std::vector<double> last_busy_;   // per rank, busy seconds of the last step
-    std::vector<double> window_busy_; // per rank, since the last rebalance or check
-    std::vector<double> cut_busy_;    // per rank, since the cut points last moved
-    long window_steps_ = 0, steps_since_rebalance_ = 0;
-    // When the rebalance found due is done: at the next rebuild, or at the end of this step
-    // even without one (worth an extra rebuild).
-    enum class BalanceDue { no, at_rebuild, now };
-    BalanceDue balance_due_ = BalanceDue::no;
-    double balance_measured_ = 0; // the imbalance that made it due
+    std::vector<double> last_busy_; // per rank, busy seconds of the last step
+    tasks::BalancePolicy balance_;
     std::vector<RebalanceRecord> rebalances_;
-    std::vector<BalanceSample> balance_history_;
     bool force_regroup_ = false;
 
     // Last member: its graphs live in arena_ and are destroyed first.
