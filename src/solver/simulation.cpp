@@ -80,7 +80,7 @@ template <int D>
 Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
                           const Checkpoint<D>* resume)
     : cfg_(cfg), kernel_(make_kernel<D>(cfg.kernel, Real(cfg.h_over_dx * cfg.dx))),
-      opts_(std::move(opts)), comm_(tasks::Comm::world()) {
+      opts_(std::move(opts)), comm_(tasks::Comm::world()), ranks_(comm_, grid_) {
     h_ = cfg.h_over_dx * cfg.dx;
     const double support = kernel_support_factor(cfg.kernel) * h_;
     eos_ = Eos{cfg.eos, Real(cfg.rho0), Real(cfg.sound_speed), Real(cfg.gamma),
@@ -137,7 +137,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     // from the checkpoint); the largest initial speed is the whole case's.
     const InitialShare share = initial_share<D>(cfg, eos_, layers, grid_, comm_.rank(),
                                                 comm_.size(), resume != nullptr ? nullptr : &P_);
-    layout_ = share.layout;
+    ranks_.set_layout(share.layout);
     u_max_ = share.max_speed;
     for (std::size_t i = 0; i < P_.size(); ++i)
         P_.p[i] = eos_.pressure(P_.rho[i]);
@@ -199,7 +199,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     // it goes on bitwise (a fresh start has x_ref = x).
     if (resume != nullptr)
         std::swap(P_.x, P_.x_ref);
-    distribute_initial_particles(resume != nullptr);
+    ranks_.distribute(P_, resume != nullptr,
+                      cfg.initial_decomposition == InitialDecomposition::key_range);
     const std::size_t n = P_.size();
     const auto per_group = static_cast<std::size_t>(std::max(1, cfg.particles_per_group));
     const int by_size = static_cast<int>((n + per_group - 1) / per_group);
@@ -232,7 +233,8 @@ void Simulation<D>::rebin_and_decompose() {
     occ.reserve(occupied_.size());
     for (const auto& c : occupied_)
         occ.push_back({c.key, c.cell, static_cast<double>(c.count)});
-    plan_halo();
+    if (comm_.parallel())
+        between_.push_back(ranks_.plan_halo(P_, ranges_, occupied_, owned_));
 
     // A particle can enter a new cell without changing the sort order, so the occupied set,
     // the group adjacency and the groups facing each peer are checked every step.
@@ -254,7 +256,8 @@ void Simulation<D>::rebin_and_decompose() {
             const auto needed = tasks::group_adjacency(grid_, occ, topo_);
             regroup = !tasks::adjacency_covers(graph_->neighbours(), needed);
             if (!regroup && comm_.parallel())
-                regroup = !tasks::adjacency_covers(graph_->halo().boundary, boundary_groups());
+                regroup = !tasks::adjacency_covers(graph_->halo().boundary,
+                                                   ranks_.boundary_groups(topo_));
         }
         if (!regroup) {
             // Re-cut when a group has drifted far above its share of particles.
@@ -290,7 +293,7 @@ void Simulation<D>::rebuild() {
         if (cut)
             apply_rebalance(*cut, true);
         else
-            migrate_to_neighbours();
+            between_.push_back(ranks_.migrate(P_));
     }
     balance_.clear_due();
     rebin_and_decompose();
@@ -313,8 +316,8 @@ void Simulation<D>::build_graph() {
 
     GraphSite site{&topo_.neighbours, comm_.parallel(), {}, {}, arena_.get()};
     if (comm_.parallel()) {
-        site.peers = peers_;
-        site.boundary = boundary_groups();
+        site.peers = ranks_.peers();
+        site.boundary = ranks_.boundary_groups(topo_);
     }
     graph_.reset(); // the old graph lives in the arena too
     graph_ = scheme_->build_graph(site);

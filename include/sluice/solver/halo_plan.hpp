@@ -1,6 +1,7 @@
 #pragma once
 // Who sends which particles to each peer rank this step (filled between steps by the rank's
-// halo plan, src/solver/simulation_ranks.cpp; packed by a scheme's halo fields).
+// halo plan, RankExchange::plan_halo in src/solver/rank_exchange.cpp; packed by a scheme's
+// halo fields).
 #include "sluice/core/cell_grid.hpp"
 
 #include <cstddef>

@@ -17,6 +17,7 @@
 #include "sluice/physics/walls.hpp"
 #include "sluice/solver/halo_plan.hpp"
 #include "sluice/solver/pressure_solve.hpp"
+#include "sluice/solver/rank_exchange.hpp"
 #include "sluice/solver/state_check.hpp"
 #include "sluice/solver/step_report.hpp"
 #include "sluice/tasks/balance_policy.hpp"
@@ -113,9 +114,9 @@ public:
     // Every rank's particles, in (cell key, id) order, on rank 0 (empty elsewhere; on one rank
     // a copy of particles()). Collective. For tests: a run never gathers (output is written by
     // every rank, src/io/h5_parallel.hpp; totals in src/solver/run_totals.hpp).
-    [[nodiscard]] Particles<D> gather_particles() const;
+    [[nodiscard]] Particles<D> gather_particles() const { return ranks_.gather(P_, owned_); }
     [[nodiscard]] const tasks::Comm& comm() const { return comm_; }
-    [[nodiscard]] const tasks::RankLayout& rank_layout() const { return layout_; }
+    [[nodiscard]] const tasks::RankLayout& rank_layout() const { return ranks_.layout(); }
     [[nodiscard]] int threads() const { return threads_; }
     [[nodiscard]] const tasks::RankProfile& profile() const { return profile_; }
     [[nodiscard]] const std::vector<RebalanceRecord>& rebalances() const { return rebalances_; }
@@ -155,15 +156,8 @@ public:
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
 
 private:
-    // `shares`: every rank holds a share of a checkpoint's particles (a restart), sent here to
-    // their owners; otherwise each holds its own already (initial_share) and learns its peers.
-    void distribute_initial_particles(bool shares);
-    // Every rank's occupied cells (units of particle count) merged in curve order. Collective.
-    [[nodiscard]] std::vector<tasks::CurveUnit>
-    all_occupied_cells(const std::vector<tasks::CurveUnit>& mine) const;
     void rebin_and_decompose();
     void rebuild();
-    void migrate_to_neighbours();
     // New cut points between ranks, gathered and decided identically on every rank.
     struct PlannedCut {
         tasks::BalancePlan plan;
@@ -172,8 +166,6 @@ private:
     std::optional<PlannedCut> plan_rebalance();
     void apply_rebalance(const PlannedCut& cut, bool at_rebuild);
     bool rebalance_between_rebuilds();
-    void plan_halo();
-    [[nodiscard]] std::vector<std::vector<int>> boundary_groups() const;
     // The step's agreement between ranks (step_agreement.cpp): this rank's report leaves as
     // soon as the graph is done; agree_on_step() collects every rank's and throws on every
     // rank if any failed.
@@ -232,12 +224,9 @@ private:
     int threads_ = 1;
     std::unique_ptr<tbb::task_arena> arena_;
     tasks::Comm comm_;
-    tasks::RankLayout layout_;
-    std::vector<int> peers_;
+    RankExchange<D> ranks_; // cut points, peers, halo plan, particles changing owner
     std::size_t owned_ = 0;
-    HaloPlan plan_;
-    std::vector<std::vector<int>> occupied_targets_; // per occupied cell: peers it is halo of
-    std::vector<tasks::MessageRecord> between_;      // communication outside the last graph
+    std::vector<tasks::MessageRecord> between_; // communication outside the last graph
     tasks::RankProfile profile_;
     std::unique_ptr<tasks::TraceRecorder> trace_;
     double receive_delay_ = 0;

@@ -1,0 +1,84 @@
+#pragma once
+// The rank plumbing (docs/ARCHITECTURE.md, "Ranks"): which part of the Morton curve this rank
+// owns and who its peers are, the halo plan (which particles each peer gets before a step),
+// the particles that change owner (migration to a neighbour after a rebuild; the all-to-all of
+// a restart or a rebalance), the cost list the balancer's policy cuts, and the gather that
+// tests use. It moves particles and counts them; it knows no formula and no stage, and it
+// holds no particles: the rank's arrays are passed in. Collective member functions are marked;
+// on one rank they do nothing that needs a peer.
+#include "sluice/core/cell_grid.hpp"
+#include "sluice/core/particles.hpp"
+#include "sluice/core/rebin.hpp"
+#include "sluice/solver/halo_plan.hpp"
+#include "sluice/tasks/comm.hpp"
+#include "sluice/tasks/decomposition.hpp"
+#include "sluice/tasks/profile.hpp"
+#include "sluice/tasks/rank_layout.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace sluice {
+
+template <int D>
+class RankExchange {
+public:
+    // `grid` is the rank's grid, read at each call (it may be set after construction).
+    RankExchange(tasks::Comm comm, const CellGrid<D>& grid) : comm_(comm), grid_(grid) {}
+
+    [[nodiscard]] const tasks::RankLayout& layout() const { return layout_; }
+    [[nodiscard]] const std::vector<int>& peers() const { return peers_; }
+    [[nodiscard]] const HaloPlan& plan() const { return plan_; }
+
+    // The cut points of the start (initial_share's, every rank the same); peers follow in
+    // distribute().
+    void set_layout(const tasks::RankLayout& layout) { layout_ = layout; }
+    // `shares`: every rank holds a share of a checkpoint's particles (a restart), sent here to
+    // their owners under cut points computed as one rank holding every particle would (or the
+    // key-range cut); otherwise each holds its own already and learns its peers. Collective.
+    void distribute(Particles<D>& P, bool shares, bool key_range);
+
+    // The halo plan of the sorted owned particles P[0, owned) (`ranges`, `occupied`: the rebin
+    // of them): which cells go to which peer, and how many particles come from each; P grows
+    // to hold them. Collective among peers; returns the count exchange's record.
+    tasks::MessageRecord plan_halo(Particles<D>& P, const CellRanges& ranges,
+                                   const std::vector<CellOccupancy>& occupied, std::size_t owned);
+    // Per peer, the local groups holding a halo cell of it (after plan_halo, whose occupied
+    // cells are the concatenated cell lists of `topo`).
+    [[nodiscard]] std::vector<std::vector<int>>
+    boundary_groups(const tasks::GroupTopology& topo) const;
+
+    // Sends every particle of P whose cell is a peer's to that peer and appends those
+    // received (P holds owned particles only). Collective among peers.
+    tasks::MessageRecord migrate(Particles<D>& P);
+
+    // Every rank's `mine` (cells with their cost, in curve order) in rank order, hence in curve
+    // order. Collective.
+    [[nodiscard]] std::vector<tasks::CurveUnit>
+    all_units(const std::vector<tasks::CurveUnit>& mine) const;
+    // Sends every particle of P to its owner under `next` and adopts `next` (and its peers).
+    // Returns the particles moved over all ranks. Collective.
+    std::uint64_t move_to(const tasks::RankLayout& next, Particles<D>& P);
+
+    // Every rank's P[0, owned) on rank 0, in (cell key, id) order (empty elsewhere; on one
+    // rank a copy). Collective.
+    [[nodiscard]] Particles<D> gather(const Particles<D>& P, std::size_t owned) const;
+
+private:
+    // all_units with a cell that straddles two shares merged (whole particle counts).
+    [[nodiscard]] std::vector<tasks::CurveUnit>
+    all_occupied_cells(const std::vector<tasks::CurveUnit>& mine) const;
+    void find_peers();
+
+    tasks::Comm comm_;
+    const CellGrid<D>& grid_;
+    tasks::RankLayout layout_;
+    std::vector<int> peers_;
+    HaloPlan plan_;
+    std::vector<std::vector<int>> occupied_targets_; // per occupied cell: peers it is halo of
+};
+
+extern template class RankExchange<2>;
+extern template class RankExchange<3>;
+
+} // namespace sluice
