@@ -95,7 +95,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     momentum_.wall_artificial = cfg.wall_artificial_viscosity;
     momentum_.p_floor = Real(cfg.background_pressure);
     scheme_ = make_scheme<D>(*this, cfg.scheme);
-    skin_ = scheme_->skin();
+    neighbours_.skin = scheme_->skin();
 
     ts_params_ =
         TimeStepParams{h_, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl, cfg.force_cfl};
@@ -129,7 +129,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     }
     try {
         // With a Verlet skin a cell must hold every pair within support + skin of the sort.
-        grid_ = CellGrid<D>::make(lo, hi, Real(support + skin_), periodic);
+        grid_ = CellGrid<D>::make(lo, hi, Real(support + neighbours_.skin), periodic);
     } catch (const std::invalid_argument& e) {
         throw CaseError(cfg.source_file, "domain.periodic", e.what());
     }
@@ -212,7 +212,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         std::swap(P_.x, P_.x_ref);
     else
         P_.x_ref = P_.x;
-    rebuilt_ = true;
+    neighbours_.rebuilt = true;
 }
 
 template <int D>
@@ -308,8 +308,7 @@ void Simulation<D>::build_graph() {
     group_limits_.assign(groups, {});
     group_failure_.assign(groups, {});
     group_speed_.assign(groups, 0.0);
-    lists_.resize(groups);
-    wide_.resize(skin_ > 0 ? groups : 0);
+    neighbours_.resize(groups);
     group_disp2_.assign(groups, 0.0);
     group_busy_.assign(groups, 0.0);
     graph_steps_ = 0;
@@ -326,8 +325,7 @@ void Simulation<D>::build_graph() {
 
 template <int D>
 void Simulation<D>::step() {
-    if (rebuilt_)
-        ++list_rebuilds_;
+    neighbours_.count_step();
     graph_->inject_receive_delay(receive_delay_);
     std::string task_error;
     try {
@@ -369,9 +367,7 @@ void Simulation<D>::step() {
         dt_ = limits_.min();
     if (comm_.parallel())
         balance_.add_step(steps_, last_busy_);
-    // The lists stay valid while every particle is within skin/2 of where they were built.
-    rebuilt_ = skin_ <= 0 || disp2_max_ > 0.25 * skin_ * skin_;
-    if (rebuilt_) {
+    if (neighbours_.expire(disp2_max_)) {
         const auto t0 = std::chrono::steady_clock::now();
         const double t1 = tasks::clock_seconds();
         rebuild();
@@ -380,7 +376,7 @@ void Simulation<D>::step() {
         if (trace_)
             trace_->add_work(steps_ + 1, "rebuild", t1, tasks::clock_seconds());
     } else if (balance_.due() == tasks::BalanceDue::now) {
-        rebuilt_ = rebalance_between_rebuilds();
+        neighbours_.rebuilt = rebalance_between_rebuilds();
     }
     profile_.between_wall += tasks::clock_seconds() - t_graph;
 }

@@ -100,8 +100,9 @@ struct SchemeContext {
         : sim_(s), cfg_(s.cfg_), opts_(s.opts_), comm_(s.comm_), P_(s.P_), grid_(s.grid_),
           ranges_(s.ranges_), plan_(s.ranks_.plan()), topo_(s.topo_), kernel_(s.kernel_),
           eos_(s.eos_), momentum_(s.momentum_), ts_params_(s.ts_params_), planes_(s.planes_),
-          bounds_(s.bounds_), h_(s.h_), lists_(s.lists_), wide_(s.wide_), skin_(s.skin_),
-          rebuilt_(s.rebuilt_), group_limits_(s.group_limits_), group_failure_(s.group_failure_),
+          bounds_(s.bounds_), h_(s.h_), lists_(s.neighbours_.lists), wide_(s.neighbours_.wide),
+          skin_(s.neighbours_.skin), rebuilt_(s.neighbours_.rebuilt),
+          group_limits_(s.group_limits_), group_failure_(s.group_failure_),
           group_speed_(s.group_speed_), group_disp2_(s.group_disp2_), u_max_(s.u_max_),
           time_(s.time_), dt_(s.dt_), dt_prev_(s.dt_prev_), steps_(s.steps_), between_(s.between_),
           receive_delay_(s.receive_delay_), graph_(s.graph_) {}

@@ -16,6 +16,7 @@
 #include "sluice/physics/timestep.hpp"
 #include "sluice/physics/walls.hpp"
 #include "sluice/solver/halo_plan.hpp"
+#include "sluice/solver/neighbour_lists.hpp"
 #include "sluice/solver/pressure_solve.hpp"
 #include "sluice/solver/rank_exchange.hpp"
 #include "sluice/solver/state_check.hpp"
@@ -97,7 +98,7 @@ public:
 
     // Steps that began with a neighbour-list rebuild (every step when numerics.neighbour_skin
     // is 0).
-    [[nodiscard]] long list_rebuilds() const { return list_rebuilds_; }
+    [[nodiscard]] long list_rebuilds() const { return neighbours_.rebuilds; }
 
     // Adds StepRequest flags to this rank's report of the next step.
     void post_request(unsigned flags) { requests_local_ |= flags; }
@@ -201,13 +202,7 @@ private:
     // Per-group results of the step's last stage (drift, correct).
     std::vector<TimeStepLimits> group_limits_;
     std::vector<std::string> group_failure_;
-    std::vector<NeighbourList<D>> lists_; // per group, rebuilt by its first stage each step
-    // Verlet lists (skin > 0): per group, the pairs within support + skin at the last rebuild;
-    // each step's lists_ are selected from them.
-    std::vector<NeighbourList<D>> wide_;
-    Real skin_ = 0;       // numerics.neighbour_skin [m]
-    bool rebuilt_ = true; // the coming (or running) step starts from a rebuild
-    long list_rebuilds_ = 0;
+    NeighbourLists<D> neighbours_;  // per group, filled by its first stage; Verlet lists
     std::vector<Real> group_disp2_; // per group: largest squared displacement from x_ref
     Real disp2_max_ = 0;            // over all ranks, after the last step
     std::vector<Real> group_speed_; // largest fluid speed per group (shifting velocity scale)
