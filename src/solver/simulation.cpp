@@ -325,19 +325,36 @@ void Simulation<D>::build_graph() {
 
 template <int D>
 void Simulation<D>::step() {
+    // The step graph of docs/ARCHITECTURE.md ("Schemes"); the same for every scheme.
     neighbours_.count_step();
-    graph_->inject_receive_delay(receive_delay_);
-    std::string task_error;
-    try {
-        // A throwing task does not stop the graph: its messages still go out, so every rank
-        // completes the step and learns of the error in the reduction below.
-        scheme_->run();
-    } catch (const std::exception& e) {
-        task_error = e.what();
-    }
+    const std::string task_error = run_graphs();
     const double t_graph = tasks::clock_seconds();
     // The report leaves now; the bookkeeping below runs while it travels.
     post_step_report(task_error);
+    add_node_times();
+    if (trace_)
+        trace_->add_work(steps_ + 2, "bookkeeping", t_graph, tasks::clock_seconds());
+    agree_on_step(); // throws on every rank if anything failed on any
+    advance_time();
+    between_steps();
+    profile_.between_wall += tasks::clock_seconds() - t_graph;
+}
+
+template <int D>
+std::string Simulation<D>::run_graphs() {
+    graph_->inject_receive_delay(receive_delay_);
+    try {
+        // A throwing task does not stop the graph: its messages still go out, so every rank
+        // completes the step and learns of the error in the step's agreement.
+        scheme_->run();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return {};
+}
+
+template <int D>
+void Simulation<D>::add_node_times() {
     // The stage layout is fixed for a case, so totals carry over when the graph is rebuilt.
     stage_busy_.resize(static_cast<std::size_t>(graph_->stage_count()), 0.0);
     for (int s = 0; s < graph_->stage_count(); ++s)
@@ -355,16 +372,20 @@ void Simulation<D>::step() {
         trace_->add_step(steps_ + 1, *graph_, between_);
     }
     between_.clear();
-    if (trace_)
-        trace_->add_work(steps_ + 2, "bookkeeping", t_graph, tasks::clock_seconds());
+}
 
-    agree_on_step(); // throws on every rank if anything failed on any
+template <int D>
+void Simulation<D>::advance_time() {
     P_.swap_buffers();
     time_ += dt_;
     ++steps_;
     dt_prev_ = dt_;
     if (!cfg_.fixed_dt)
         dt_ = limits_.min();
+}
+
+template <int D>
+void Simulation<D>::between_steps() {
     if (comm_.parallel())
         balance_.add_step(steps_, last_busy_);
     if (neighbours_.expire(disp2_max_)) {
@@ -378,7 +399,6 @@ void Simulation<D>::step() {
     } else if (balance_.due() == tasks::BalanceDue::now) {
         neighbours_.rebuilt = rebalance_between_rebuilds();
     }
-    profile_.between_wall += tasks::clock_seconds() - t_graph;
 }
 
 template <int D>

@@ -157,6 +157,11 @@ public:
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
 
 private:
+    // The parts of step(), in order.
+    std::string run_graphs(); // the scheme's graphs; a task's error, or empty
+    void add_node_times();    // per stage and group, into the profile (and the trace)
+    void advance_time();      // buffers swapped, t and dt advance
+    void between_steps();     // the lists rebuilt, or the ranks rebalanced, when due
     void rebin_and_decompose();
     void rebuild();
     // New cut points between ranks, gathered and decided identically on every rank.
