@@ -25,21 +25,10 @@ import json
 import sys
 from collections import defaultdict
 
-MPI_TRACK = 10000  # the trace's track for the main thread (tasks/src/trace.cpp)
+from trace_reader import MPI_TRACK, load_slices, step_slices, union
+
 # In order of precedence: a message slice inside a work slice counts as the message.
 KINDS = ["reduce", "migrate", "halo counts", "rebalance", "rebuild", "bookkeeping"]
-
-
-def union(intervals):
-    out = []
-    for a, b in sorted(intervals):
-        if b <= a:
-            continue
-        if out and a <= out[-1][1]:
-            out[-1][1] = max(out[-1][1], b)
-        else:
-            out.append([a, b])
-    return out
 
 
 def covered(intervals, lo, hi):
@@ -57,12 +46,7 @@ def kind_of(name):
 def parse(events):
     """Per rank: step -> task intervals, and the main thread's named slices."""
     ranks = defaultdict(lambda: {"tasks": defaultdict(list), "main": []})
-    for e in events:
-        step = e.get("args", {}).get("step")
-        if step is None:
-            continue
-        a = e["ts"] * 1e-6
-        b = a + e["dur"] * 1e-6
+    for step, a, b, e in step_slices(events):
         r = ranks[e["pid"]]
         if e.get("tid") == MPI_TRACK:
             k = kind_of(e["name"])
@@ -136,8 +120,7 @@ def main():
     ap.add_argument("--skip", type=int, default=2)
     ap.add_argument("--json", action="store_true")
     args = ap.parse_args()
-    with open(args.trace) as f:
-        events = [e for e in json.load(f)["traceEvents"] if e.get("ph") == "X"]
+    events = load_slices(args.trace)
     ranks = parse(events)
     wait, after = reduce_skew(ranks)
     out = {}

@@ -30,23 +30,8 @@ import json
 import sys
 from collections import defaultdict
 
-MPI_TRACK = 10000  # the trace's track for the main thread's messages (tasks/src/trace_*.cpp)
+from trace_reader import MPI_TRACK, load_slices, step_slices, union_length
 
-
-def union_length(intervals):
-    """Length of the union of [a, b) intervals."""
-    total, end = 0.0, None
-    start = None
-    for a, b in sorted(intervals):
-        if end is None or a > end:
-            if end is not None:
-                total += end - start
-            start, end = a, b
-        else:
-            end = max(end, b)
-    if end is not None:
-        total += end - start
-    return total
 
 
 def rank_figures(events, skip):
@@ -55,12 +40,7 @@ def rank_figures(events, skip):
     last_end = {}        # step -> last event end
     tasks = defaultdict(list)  # step -> task intervals
     recvs = defaultdict(list)  # step -> receive intervals (posted .. complete)
-    for e in events:
-        step = e.get("args", {}).get("step")
-        if step is None:
-            continue
-        a = e["ts"] * 1e-6
-        b = a + e["dur"] * 1e-6
+    for step, a, b, e in step_slices(events):
         first[step] = min(first.get(step, a), a)
         last_end[step] = max(last_end.get(step, b), b)
         if e.get("tid") != MPI_TRACK:
@@ -101,8 +81,7 @@ def main():
     ap.add_argument("--cores", type=int, nargs="*", default=[16, 128])
     ap.add_argument("--json", action="store_true", help="print the figures as JSON")
     args = ap.parse_args()
-    with open(args.trace) as f:
-        events = [e for e in json.load(f)["traceEvents"] if e.get("ph") == "X"]
+    events = load_slices(args.trace)
     by_rank = defaultdict(list)
     for e in events:
         by_rank[e["pid"]].append(e)
