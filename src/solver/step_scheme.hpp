@@ -97,7 +97,7 @@ public:
 template <int D>
 struct SchemeContext {
     explicit SchemeContext(Simulation<D>& s)
-        : sim_(s), cfg_(s.cfg_), opts_(s.opts_), comm_(s.comm_), P_(s.P_), grid_(s.grid_),
+        : cfg_(s.cfg_), opts_(s.opts_), comm_(s.comm_), P_(s.P_), grid_(s.grid_),
           ranges_(s.ranges_), plan_(s.ranks_.plan()), topo_(s.topo_), kernel_(s.kernel_),
           eos_(s.eos_), momentum_(s.momentum_), ts_params_(s.ts_params_), planes_(s.planes_),
           bounds_(s.bounds_), h_(s.h_), lists_(s.neighbours_.lists), wide_(s.neighbours_.wide),
@@ -107,12 +107,6 @@ struct SchemeContext {
           time_(s.time_), dt_(s.dt_), dt_prev_(s.dt_prev_), steps_(s.steps_), between_(s.between_),
           receive_delay_(s.receive_delay_), graph_(s.graph_) {}
 
-    // Local groups facing each peer (RankExchange::boundary_groups).
-    [[nodiscard]] std::vector<std::vector<int>> boundary_groups() const {
-        return sim_.ranks_.boundary_groups(sim_.topo_);
-    }
-
-    Simulation<D>& sim_;
     const CaseConfig& cfg_;
     const SimulationOptions& opts_;
     const tasks::Comm& comm_;
