@@ -40,11 +40,9 @@ namespace detail {
 // The momentum equation's sum over the neighbours of fluid particle i, with the laminar and
 // the artificial viscosity switched at compile time (`Viscous`: mu > 0, `Artificial`:
 // alpha > 0): the configuration-1 case has no laminar viscosity, and testing both switches in
-// every pair cost about a tenth of the loop. Over a neighbour list (every WCSPH step) the
-// pairs are read straight from the list with the particle arrays hoisted into locals, so the
-// compiler keeps them in registers instead of reloading them each pair through the
-// Particles object; off a list, the same pair term runs through for_each_neighbour. Same
-// arithmetic in the same order in both, and as before this change.
+// every pair cost about a tenth of the loop. The particle arrays are hoisted into locals, so
+// the compiler keeps them in registers instead of reloading them each pair through the
+// Particles object. Same arithmetic in the same order as before this change.
 template <int D, class K, bool Viscous, bool Artificial>
 SLUICE_FLATTEN void acceleration_cell(const Neighbourhood<D>& nb, const K& kernel,
                                       const MomentumParams<D>& prm, CellIndex c,
@@ -101,34 +99,7 @@ SLUICE_FLATTEN void acceleration_cell(const Neighbourhood<D>& nb, const K& kerne
             }
             return pair - m_j * s * gradW;
         };
-        Vec<D> acc = Vec<D>::Zero();
-        const NeighbourList<D>* list = nb.list;
-        if (list != nullptr && list->covers(i)) {
-            const std::uint32_t k = i - list->first;
-            const std::uint32_t b = list->offset[k], e = list->offset[k + 1];
-            const std::uint32_t* const js = list->j.data();
-            const Real* const fs = list->factor.data();
-            const Vec<D>* const x = nb.x.data();
-            const Vec<D> xi = x[i];
-            if (!list->periodic) {
-                for (std::uint32_t p = b; p < e; ++p) {
-                    const std::uint32_t j = js[p];
-                    const Vec<D> dx = xi - x[j];
-                    acc += pair_term(j, dx, dx.squaredNorm(), fs[p]);
-                }
-            } else {
-                const Vec<D>* const shift = list->shift.data();
-                for (std::uint32_t p = b; p < e; ++p) {
-                    const std::uint32_t j = js[p];
-                    const Vec<D> dx = xi + shift[p] - x[j];
-                    acc += pair_term(j, dx, dx.squaredNorm(), fs[p]);
-                }
-            }
-        } else {
-            nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>& dx, Real r2) {
-                acc += pair_term(j, dx, r2, F(r2));
-            });
-        }
+        const Vec<D> acc = nb.sum_over_pairs(adj, i, F, Vec<D>(Vec<D>::Zero()), pair_term);
         a_out[i] = acc + prm.gravity;
     }
 }
