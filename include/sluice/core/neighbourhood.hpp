@@ -119,7 +119,7 @@ struct Neighbourhood {
     using Dx = std::array<Real, D>;
 
     // The sums over the pairs of i of f(j, dx, r2, factor(r2)) -> std::array<Real, N>
-    // (N <= 3), with dx = x_i - x_j as a Dx. Over a list this is an `omp simd` reduction: the
+    // (N <= 9: the renormalised density gradient's 3-D matrix and vector), with dx = x_i - x_j as a Dx. Over a list this is an `omp simd` reduction: the
     // compiler gives each vector lane every W-th pair and adds the lanes at the end, so the
     // pair arithmetic runs W pairs per instruction. A pair function for it is written in
     // plain components (no Eigen vectors, whose 2-D operations are SSE intrinsics the
@@ -132,7 +132,7 @@ struct Neighbourhood {
     [[nodiscard]] std::array<Real, N> lane_sum_over_pairs(const AdjacentCells<D>& adj,
                                                           std::uint32_t i, const G& factor,
                                                           F&& f) const {
-        static_assert(N >= 1 && N <= 3);
+        static_assert(N >= 1 && N <= 9);
         static_assert(sizeof(Vec<D>) == D * sizeof(Real), "positions are read as D-strided");
         std::array<Real, N> sum{};
         if (list == nullptr || !list->covers(i)) {
@@ -157,8 +157,10 @@ struct Neighbourhood {
         // One loop for both kinds of list; `periodic` adds the image shift of each pair.
         const auto lanes = [&]<bool periodic>() {
             const Vec<D>* shift = list->shift.data();
-            Real s0 = 0, s1 = 0, s2 = 0;
-#pragma omp simd reduction(+ : s0, s1, s2)
+            // One named accumulator per sum (an array section in the reduction clause does
+            // not vectorise with GCC 12); those beyond N stay zero and are optimised away.
+            Real s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0, s8 = 0;
+#pragma omp simd reduction(+ : s0, s1, s2, s3, s4, s5, s6, s7, s8)
             for (std::uint32_t p = b; p < e; ++p) {
                 const std::uint32_t j = js[p];
                 Dx dx;
@@ -176,10 +178,22 @@ struct Neighbourhood {
                     s1 += c[1];
                 if constexpr (N > 2)
                     s2 += c[2];
+                if constexpr (N > 3)
+                    s3 += c[3];
+                if constexpr (N > 4)
+                    s4 += c[4];
+                if constexpr (N > 5)
+                    s5 += c[5];
+                if constexpr (N > 6)
+                    s6 += c[6];
+                if constexpr (N > 7)
+                    s7 += c[7];
+                if constexpr (N > 8)
+                    s8 += c[8];
             }
-            return std::array<Real, 3>{s0, s1, s2};
+            return std::array<Real, 9>{s0, s1, s2, s3, s4, s5, s6, s7, s8};
         };
-        const std::array<Real, 3> s =
+        const std::array<Real, 9> s =
             list->periodic ? lanes.template operator()<true>() : lanes.template operator()<false>();
         for (std::size_t n = 0; n < N; ++n)
             sum[n] = s[n];
