@@ -93,7 +93,8 @@ def figures(rank, skip, reduce_entry):
 def reduce_skew(ranks):
     """Per rank: seconds of the reduction spent waiting for the last rank to enter it.
 
-    The ranks' clocks have different origins, so entries are not compared directly: a
+    The ranks' clocks share an origin set after a barrier at the start of the time loop, but
+    only to within that barrier's skew, so entries are not compared directly: a
     reduction completes on every rank at about the same moment, so the rank that entered last
     spent the least time in it (the latency), and each rank's excess over that least time is
     its wait for the last rank."""

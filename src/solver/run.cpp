@@ -9,6 +9,7 @@
 #include "sluice/io/run_log.hpp"
 #include "sluice/io/snapshot_writer.hpp"
 #include "sluice/solver/simulation.hpp"
+#include "sluice/tasks/step_graph.hpp"
 
 #include "memory_use.hpp"
 #include "run_outputs.hpp"
@@ -150,6 +151,11 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
 
     Progress progress(cfg.end_time, opts.quiet || !root, opts.verbose);
     progress.log_to([&log](const std::string& line) { log.file_only(line); });
+    // One origin for the task clock of every rank, set together: each rank's origin was its
+    // own first use of the clock (tens of ms apart), so a trace could not lay the ranks' tasks
+    // side by side (perf/strong_scaling/between_steps.py compared durations only).
+    sim.comm().barrier();
+    tasks::reset_clock_origin();
     t0 = Clock::now();
     RunRequests requests(opts.out_dir, cfg.checkpoint_every_minutes, root);
     outputs.sample(sim, false);
