@@ -64,8 +64,8 @@ SLUICE_FLATTEN void renormalised_density_gradient(const Neighbourhood<D>& nb, co
                 // holds two consecutive loops.
                 const Real m = -w;
                 if constexpr (D == 2)
-                    return {m * dx[0] * dx[0], m * dx[0] * dx[1], m * dx[1] * dx[1],
-                            wr * dx[0], wr * dx[1]};
+                    return {m * dx[0] * dx[0], m * dx[0] * dx[1], m * dx[1] * dx[1], wr * dx[0],
+                            wr * dx[1]};
                 else
                     return {m * dx[0] * dx[0], m * dx[0] * dx[1], m * dx[0] * dx[2],
                             m * dx[1] * dx[1], m * dx[1] * dx[2], m * dx[2] * dx[2],
