@@ -147,15 +147,18 @@ TEST_CASE("A move beyond skin/2 can lose a pair: the rebuild criterion is needed
 
 namespace {
 
-// A pair function with three sums of the kind the pair loops form (a gradient-like sum and a
-// scalar one), in plain components as lane_sum_over_pairs wants.
-template <int D>
-std::array<Real, 3> pair_sums(std::uint32_t j, const typename Neighbourhood<D>::Dx& dx, Real r2,
+// A pair function with N sums of the kind the pair loops form (gradient-like sums and scalar
+// ones), in plain components as lane_sum_over_pairs wants.
+template <int D, std::size_t N>
+std::array<Real, N> pair_sums(std::uint32_t j, const typename Neighbourhood<D>::Dx& dx, Real r2,
                               Real factor) {
-    return {factor * dx[0], factor * dx[D - 1], r2 * Real(j % 7)};
+    std::array<Real, N> out;
+    for (std::size_t k = 0; k < N; ++k)
+        out[k] = k % 3 == 2 ? r2 * Real((j + k) % 7) : factor * dx[k % D] * Real(k + 1);
+    return out;
 }
 
-template <int D>
+template <int D, std::size_t N>
 void check_lane_sums(bool periodic, unsigned seed) {
     std::mt19937 rng(seed);
     const int n = D == 2 ? 24 : 10;
@@ -173,19 +176,19 @@ void check_lane_sums(bool periodic, unsigned seed) {
     listed.list = &whole;
     tail_listed.list = &tail;
     const auto f = [](std::uint32_t j, const typename Neighbourhood<D>::Dx& d, Real r2, Real F) {
-        return pair_sums<D>(j, d, r2, F);
+        return pair_sums<D, N>(j, d, r2, F);
     };
     double worst = 0;
     for (std::size_t c = 0; c < C.cells.size(); ++c) {
         const AdjacentCells<D> adj = nb.adjacent(C.cells[c]);
         for (std::uint32_t i = nb.begin(C.cells[c]); i < nb.end(C.cells[c]); ++i) {
-            const auto scanned = nb.template lane_sum_over_pairs<3>(adj, i, factor, f);
-            const auto in_list = listed.template lane_sum_over_pairs<3>(adj, i, factor, f);
-            for (std::size_t k = 0; k < 3; ++k)
+            const auto scanned = nb.template lane_sum_over_pairs<N>(adj, i, factor, f);
+            const auto in_list = listed.template lane_sum_over_pairs<N>(adj, i, factor, f);
+            for (std::size_t k = 0; k < N; ++k)
                 worst = std::max(worst, std::abs(double(in_list[k] - scanned[k])) /
                                             (std::abs(double(scanned[k])) + 1e-3));
             if (c >= half) {
-                const auto in_tail = tail_listed.template lane_sum_over_pairs<3>(adj, i, factor, f);
+                const auto in_tail = tail_listed.template lane_sum_over_pairs<N>(adj, i, factor, f);
                 CHECK(in_tail == in_list);
             }
         }
@@ -198,9 +201,12 @@ void check_lane_sums(bool periodic, unsigned seed) {
 
 TEST_CASE("Sums over listed pairs in vector lanes: the scan's sums to round-off, and the same "
           "bits wherever a row sits in memory") {
+    // N = 3 and N = 9 (the most accumulators: the 3-D renormalised density gradient's).
     for (unsigned seed = 1; seed <= 2; ++seed) {
-        check_lane_sums<2>(false, seed);
-        check_lane_sums<2>(true, seed);
-        check_lane_sums<3>(false, seed);
+        check_lane_sums<2, 3>(false, seed);
+        check_lane_sums<2, 3>(true, seed);
+        check_lane_sums<3, 3>(false, seed);
+        check_lane_sums<2, 9>(true, seed);
+        check_lane_sums<3, 9>(false, seed);
     }
 }
