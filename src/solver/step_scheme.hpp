@@ -5,6 +5,7 @@
 // time-step and neighbour-list settings; and the units of the rank's state it is lent. WCSPH
 // (schemes/wcsph/) and projection (schemes/projection/) are the two implementations. Private to
 // src/solver.
+#include "sluice/solver/halo_fields.hpp"
 #include "sluice/solver/neighbour_lists.hpp"
 #include "sluice/solver/pressure_solve.hpp"
 #include "sluice/solver/simulation.hpp"
@@ -17,14 +18,13 @@
 
 namespace sluice {
 
-// One stage of a step graph: its name, how far it reads the previous stage, and the halo
-// field (the scheme's own enumeration) that carries its results to the other ranks' next
-// stages, if any.
-template <class Field>
+// One stage of a step graph, declared once: its name, how far it reads the previous stage,
+// and the halo field (halo_fields.hpp: the particles it carries, the arrays it copies) that
+// carries its results to the other ranks' next stages, if any.
 struct StageRow {
     const char* name;
     tasks::Reach reach;
-    std::optional<Field> sends;
+    std::optional<HaloField> sends;
 };
 
 // What a scheme needs of the rank to wire a graph's halo exchanges.
@@ -37,31 +37,30 @@ struct GraphSite {
 };
 
 // The step graph that `rows` declare: one stage per row and one halo exchange per row that
-// sends a field (after `before`, the field sent before the first stage, if any). `fields`
-// receives the exchanged fields in exchange order, for `data` to pack by.
-template <class Field, class Name>
-std::unique_ptr<tasks::StepGraph> graph_of_rows(const std::vector<StageRow<Field>>& rows,
-                                                std::optional<Field> before, Name name,
-                                                tasks::StepGraph::Body body, const GraphSite& site,
-                                                tasks::HaloData* data, std::vector<Field>& fields) {
+// sends a field (after `before`, the field sent before the first stage, if any). `halo`
+// receives the exchanged fields in exchange order and packs them.
+template <int D>
+std::unique_ptr<tasks::StepGraph>
+graph_of_rows(const std::vector<StageRow>& rows, std::optional<HaloField> before,
+              tasks::StepGraph::Body body, const GraphSite& site, HaloFields<D>& halo) {
     std::vector<tasks::StageSpec> specs;
-    for (const StageRow<Field>& row : rows)
+    for (const StageRow& row : rows)
         specs.push_back({row.name, row.reach});
     tasks::HaloWiring wiring;
     if (site.parallel) {
-        fields.clear();
+        halo.exchanges.clear();
         if (before) {
-            wiring.exchanges.push_back({name(*before), -1});
-            fields.push_back(*before);
+            wiring.exchanges.push_back({before->name, -1});
+            halo.exchanges.push_back(*before);
         }
         for (std::size_t stage = 0; stage < rows.size(); ++stage)
             if (rows[stage].sends) {
-                wiring.exchanges.push_back({name(*rows[stage].sends), static_cast<int>(stage)});
-                fields.push_back(*rows[stage].sends);
+                wiring.exchanges.push_back({rows[stage].sends->name, static_cast<int>(stage)});
+                halo.exchanges.push_back(*rows[stage].sends);
             }
         wiring.peers = site.peers;
         wiring.boundary = site.boundary;
-        wiring.data = data;
+        wiring.data = &halo;
     }
     return std::make_unique<tasks::StepGraph>(std::move(specs), *site.neighbours, std::move(body),
                                               std::move(wiring), site.arena);

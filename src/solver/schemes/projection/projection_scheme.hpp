@@ -14,9 +14,6 @@
 
 namespace sluice {
 
-// The fields the projection scheme's graphs exchange (ProjectionHalo packs them).
-enum class ProjectionField { state, u_star, iterate, pressure };
-
 template <int D>
 class ProjectionScheme final : public StepScheme<D> {
 public:
@@ -44,8 +41,6 @@ public:
 private:
     void init_projection();
     void run_projection(tasks::StepGraph& graph);
-    // The per-particle array that an exchange of `field` carries this step.
-    typename ProjectionHalo<D>::Field halo_field(ProjectionField field);
     template <class K>
     void projection_stage(const K& kernel, int stage, int group);
     void solver_stage(int stage, int group);
@@ -63,9 +58,6 @@ private:
     GroupResults& results_;
     const RankLink rank_;
 
-    std::unique_ptr<HaloFields<D>> halo_; // the state at the start of the step
-    // The fields of each graph's exchanges, in exchange order (from the stage tables).
-    std::vector<ProjectionField> main_fields_, solver_fields_, correct_fields_;
     // Last member: its graphs live in the Simulation's arena and are destroyed first.
     std::unique_ptr<ProjectionData<D>> proj_;
 };

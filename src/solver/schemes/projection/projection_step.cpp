@@ -42,20 +42,6 @@ std::vector<Vec<D>> lattice_offsets(Real dx, Real re) {
     return out;
 }
 
-const char* field_name(ProjectionField f) {
-    switch (f) {
-    case ProjectionField::state:
-        return "state";
-    case ProjectionField::u_star:
-        return "u_star";
-    case ProjectionField::iterate:
-        return "iterate";
-    case ProjectionField::pressure:
-        return "pressure";
-    }
-    return "?";
-}
-
 } // namespace
 
 template <int D>
@@ -79,63 +65,41 @@ void ProjectionScheme<D>::init_projection() {
             P_.rho[i] = Real(case_.cfg.rho0);
             P_.mass[i] = Real(case_.cfg.rho0) * volume;
         }
-    // Only the state exchange of these fields is used (reference positions: no skin).
-    halo_ = std::make_unique<HaloFields<D>>(P_, cells_.ranges, cells_.grid, rank_.plan, false,
-                                            false, false);
-    d.main_halo = std::make_unique<ProjectionHalo<D>>(*halo_, cells_.ranges, rank_.plan);
-    d.solver_halo = std::make_unique<ProjectionHalo<D>>(*halo_, cells_.ranges, rank_.plan);
-    d.correct_halo = std::make_unique<ProjectionHalo<D>>(*halo_, cells_.ranges, rank_.plan);
+    // No skin: the state carries no reference positions.
+    for (auto* halo : {&d.main_halo, &d.solver_halo, &d.correct_halo})
+        *halo = std::make_unique<HaloFields<D>>(P_, cells_.ranges, cells_.grid, rank_.plan, false);
 }
 
 template <int D>
 std::unique_ptr<tasks::StepGraph> ProjectionScheme<D>::build_graph(const GraphSite& site) {
     using tasks::Reach;
-    using Row = StageRow<ProjectionField>;
-    using Field = ProjectionField;
     ProjectionData<D>& d = *proj_;
     d.groups.resize(site.neighbours->size());
-    // The stages of the three graphs, one row each.
-    const std::vector<Row> main{{"stencil", Reach::neighbourhood, Field::u_star},
-                                {"ppe_source", Reach::neighbourhood, std::nullopt}};
-    const std::vector<Row> solver{{"ppe_prepare", Reach::self, Field::iterate},
-                                  {"ppe_apply", Reach::neighbourhood, std::nullopt}};
-    const std::vector<Row> correct{{"correct", Reach::neighbourhood, std::nullopt}};
-    if (site.parallel)
-        halo_->what.assign(1, HaloFields<D>::What::state); // ProjectionHalo delegates the state
+    // The stages of the three graphs, one row each, with the halo field each sends.
+    const std::vector<StageRow> main{{"stencil", Reach::neighbourhood,
+                                      HaloField{"u_star", std::nullopt, {halo_column(d.u_star)}}},
+                                     {"ppe_source", Reach::neighbourhood, std::nullopt}};
+    const std::vector<StageRow> solver{
+        {"ppe_prepare", Reach::self, HaloField{"iterate", std::nullopt, {halo_column(d.y)}}},
+        {"ppe_apply", Reach::neighbourhood, std::nullopt}};
+    const std::vector<StageRow> correct{{"correct", Reach::neighbourhood, std::nullopt}};
     // The old graphs live in the arena too.
     d.solver_graph.reset();
     d.correct_graph.reset();
-    auto graph = graph_of_rows(
-        main, std::optional<Field>(Field::state), field_name,
+    auto graph = graph_of_rows<D>(
+        main, d.main_halo->state(),
         [this](int stage, int group) {
             std::visit([&](const auto& k) { projection_stage(k, stage, group); }, case_.kernel);
         },
-        site, d.main_halo.get(), main_fields_);
-    d.solver_graph = graph_of_rows(
-        solver, std::optional<Field>(), field_name,
-        [this](int stage, int group) { solver_stage(stage, group); }, site, d.solver_halo.get(),
-        solver_fields_);
-    d.correct_graph = graph_of_rows(
-        correct, std::optional<Field>(Field::pressure), field_name,
-        [this](int, int group) { correct_stage(group); }, site, d.correct_halo.get(),
-        correct_fields_);
+        site, *d.main_halo);
+    d.solver_graph = graph_of_rows<D>(
+        solver, std::nullopt, [this](int stage, int group) { solver_stage(stage, group); }, site,
+        *d.solver_halo);
+    // The correction reads the neighbours' pressures, the solution of the solve.
+    d.correct_graph = graph_of_rows<D>(
+        correct, HaloField{"pressure", std::nullopt, {halo_column(P_.p)}},
+        [this](int, int group) { correct_stage(group); }, site, *d.correct_halo);
     return graph;
-}
-
-template <int D>
-typename ProjectionHalo<D>::Field ProjectionScheme<D>::halo_field(ProjectionField field) {
-    ProjectionData<D>& d = *proj_;
-    switch (field) {
-    case ProjectionField::state:
-        return {}; // HaloFields' state exchange
-    case ProjectionField::u_star:
-        return {nullptr, d.u_star.data()};
-    case ProjectionField::iterate:
-        return {d.y.data(), nullptr};
-    case ProjectionField::pressure:
-        return {P_.p.data(), nullptr};
-    }
-    return {};
 }
 
 // Stage 0 "stencil": neighbour list, WMLS coefficients, free surface, number density, wall
@@ -370,14 +334,7 @@ void ProjectionScheme<D>::run_projection(tasks::StepGraph& graph) {
     ProjectionData<D>& d = *proj_;
     d.resize(P_.size());
     d.failed = false;
-    halo_->assign_cells = neighbours_.rebuilt;
-    for (auto [halo, fields] : {std::pair{d.main_halo.get(), &main_fields_},
-                                std::pair{d.solver_halo.get(), &solver_fields_},
-                                std::pair{d.correct_halo.get(), &correct_fields_}}) {
-        halo->fields.clear();
-        for (ProjectionField f : *fields)
-            halo->fields.push_back(halo_field(f));
-    }
+    d.main_halo->assign_cells = neighbours_.rebuilt;
     for (tasks::StepGraph* g : {d.solver_graph.get(), d.correct_graph.get()})
         g->inject_receive_delay(rank_.receive_delay);
     // A task that throws must not leave peers waiting: every rank runs every graph and every

@@ -1,6 +1,6 @@
 #pragma once
 // The weakly compressible scheme (docs/ARCHITECTURE.md, "The step as a graph"): its stage
-// table and stage bodies (wcsph_stages.cpp) and the halo fields they send (halo_fields.hpp).
+// table, the halo fields its stages send, and the stage bodies (wcsph_stages.cpp).
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/riemann.hpp"
 #include "sluice/solver/halo_fields.hpp"
@@ -35,10 +35,9 @@ public:
     void run(tasks::StepGraph& graph) override;
 
 private:
-    using What = typename HaloFields<D>::What;
     using StageKind = WcsphStage;
     struct Stage {
-        StageRow<What> row;
+        StageRow row;
         StageKind kind;
     };
     // The step's stages, one row each (wcsph_stages.cpp).

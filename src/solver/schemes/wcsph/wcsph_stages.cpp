@@ -36,8 +36,7 @@ WcsphScheme<D>::WcsphScheme(const CaseParams<D>& params, Particles<D>& P, const 
                                 Real(cfg.sound_speed),       Real(3),
                                 case_.momentum.mu,           case_.momentum.h,
                                 case_.momentum.wall_viscous, case_.momentum.p_floor};
-    halo_ = std::make_unique<HaloFields<D>>(P_, cells_.ranges, cells_.grid, rank_.plan,
-                                            !continuity_, density_gradient_, skin() > 0);
+    halo_ = std::make_unique<HaloFields<D>>(P_, cells_.ranges, cells_.grid, rank_.plan, skin() > 0);
 }
 
 enum class WcsphStage : std::uint8_t { density, walls, accel, kick, drift };
@@ -45,16 +44,31 @@ enum class WcsphStage : std::uint8_t { density, walls, accel, kick, drift };
 template <int D>
 std::vector<typename WcsphScheme<D>::Stage> WcsphScheme<D>::stage_table() const {
     using tasks::Reach;
-    // Before the first stage the state travels.
+    // Each row: the stage, and the halo field its results travel as (the particles it
+    // carries, the arrays it copies: what the next stages read of a neighbour). Before the
+    // first stage the state travels.
     std::vector<Stage> rows;
-    rows.push_back({{"density", Reach::neighbourhood, What::pressure}, StageKind::density});
+    HaloField pressure{"pressure",
+                       std::nullopt,
+                       {halo_column(P_.p), halo_column(P_.p_over_rho2), halo_column(P_.volume)}};
+    if (!continuity_) // summation density
+        pressure.columns.push_back(halo_column(P_.rho));
+    if (density_gradient_)
+        pressure.columns.push_back(halo_column(P_.grad_rho));
+    rows.push_back({{"density", Reach::neighbourhood, pressure}, StageKind::density});
     if (case_.cfg.walls == WallModel::dummy)
-        rows.push_back({{"walls", Reach::neighbourhood, What::walls}, StageKind::walls});
+        rows.push_back({{"walls", Reach::neighbourhood,
+                         HaloField{"walls",
+                                   Kind::wall,
+                                   {halo_column(P_.p), halo_column(P_.rho), halo_column(P_.mass),
+                                    halo_column(P_.v_bc)}}},
+                        StageKind::walls});
     rows.push_back({{"accel", Reach::neighbourhood, std::nullopt}, StageKind::accel});
     // The continuity rate reads the neighbours' kicked velocities; summation needs nothing.
-    rows.push_back(
-        {{"kick", Reach::self, continuity_ ? std::optional<What>(What::velocity) : std::nullopt},
-         StageKind::kick});
+    std::optional<HaloField> velocity;
+    if (continuity_)
+        velocity = HaloField{"velocity", Kind::fluid, {halo_column(P_.v_half)}};
+    rows.push_back({{"kick", Reach::self, velocity}, StageKind::kick});
     rows.push_back({{"drift", continuity_ ? Reach::neighbourhood : Reach::self, std::nullopt},
                     StageKind::drift});
     return rows;
@@ -62,15 +76,15 @@ std::vector<typename WcsphScheme<D>::Stage> WcsphScheme<D>::stage_table() const 
 
 template <int D>
 std::unique_ptr<tasks::StepGraph> WcsphScheme<D>::build_graph(const GraphSite& site) {
-    std::vector<StageRow<What>> rows;
+    std::vector<StageRow> rows;
     stage_kinds_.clear();
     for (const Stage& s : stage_table()) {
         rows.push_back(s.row);
         stage_kinds_.push_back(s.kind);
     }
-    return graph_of_rows(
-        rows, std::optional<What>(What::state), [this](What w) { return halo_->name(w); },
-        [this](int stage, int group) { run_stage(stage, group); }, site, halo_.get(), halo_->what);
+    return graph_of_rows<D>(
+        rows, halo_->state(), [this](int stage, int group) { run_stage(stage, group); }, site,
+        *halo_);
 }
 
 template <int D>
