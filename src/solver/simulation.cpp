@@ -57,19 +57,28 @@ std::vector<Plane<D>> reflective_planes(const CaseConfig& cfg) {
     return planes;
 }
 
-// The case's scheme (numerics.scheme).
+} // namespace
+
 template <int D>
-std::unique_ptr<StepScheme<D>> make_scheme(Simulation<D>& sim, Scheme scheme) {
-    switch (scheme) {
-    case Scheme::wcsph:
-        return std::make_unique<WcsphScheme<D>>(sim);
+std::unique_ptr<StepScheme<D>> Simulation<D>::make_scheme() {
+    // References: the parameters set after this call (time-step, planes, bounds) are read
+    // only by the stages.
+    const CaseParams<D> params{cfg_, kernel_, eos_, momentum_, ts_params_, planes_, bounds_, h_};
+    const RankCells<D> cells{grid_, ranges_, topo_};
+    const RankLink rank{comm_, ranks_.plan(), between_, receive_delay_};
+    switch (cfg_.scheme) {
+    case Scheme::wcsph: {
+        // --debug-fail-rank/--debug-fail-step: the step in which this rank's drift throws.
+        const long fail_step = comm_.rank() == opts_.debug_fail_rank ? opts_.debug_fail_step : -1;
+        return std::make_unique<WcsphScheme<D>>(params, P_, cells, neighbours_, clock_, results_,
+                                                rank, fail_step);
+    }
     case Scheme::projection:
-        return std::make_unique<ProjectionScheme<D>>(sim);
+        return std::make_unique<ProjectionScheme<D>>(params, P_, cells, neighbours_, clock_,
+                                                     results_, rank);
     }
     throw InternalError("unknown numerics.scheme");
 }
-
-} // namespace
 
 template <int D>
 Simulation<D>::~Simulation() {
@@ -94,7 +103,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     momentum_.wall_viscous = cfg.no_slip;
     momentum_.wall_artificial = cfg.wall_artificial_viscosity;
     momentum_.p_floor = Real(cfg.background_pressure);
-    scheme_ = make_scheme<D>(*this, cfg.scheme);
+    scheme_ = make_scheme();
     neighbours_.skin = scheme_->skin();
 
     ts_params_ =
@@ -138,7 +147,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     const InitialShare share = initial_share<D>(cfg, eos_, layers, grid_, comm_.rank(),
                                                 comm_.size(), resume != nullptr ? nullptr : &P_);
     ranks_.set_layout(share.layout);
-    u_max_ = share.max_speed;
+    clock_.u_max = share.max_speed;
     for (std::size_t i = 0; i < P_.size(); ++i)
         P_.p[i] = eos_.pressure(P_.rho[i]);
 
@@ -151,9 +160,9 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
                                         "{:.4g} s); remove numerics.dt to let the solver choose",
                                         *cfg.fixed_dt, rest.min(), rest.acoustic, rest.viscous,
                                         rest.force));
-        dt_ = *cfg.fixed_dt;
+        clock_.dt = *cfg.fixed_dt;
     } else {
-        dt_ = rest.min();
+        clock_.dt = rest.min();
     }
     limits_ = rest;
     if (resume != nullptr) {
@@ -161,11 +170,11 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         // started; from here on the checkpoint's state replaces it.
         P_ = resume->particles;
         const SolverState& st = resume->solver;
-        time_ = st.time;
-        steps_ = static_cast<long>(st.step);
-        dt_ = st.dt;
-        dt_prev_ = st.dt_prev;
-        u_max_ = Real(st.u_max);
+        clock_.time = st.time;
+        clock_.steps = static_cast<long>(st.step);
+        clock_.dt = st.dt;
+        clock_.dt_prev = st.dt_prev;
+        clock_.u_max = Real(st.u_max);
         limits_ = TimeStepLimits{st.limit_acoustic, st.limit_viscous, st.limit_force};
     }
 
@@ -220,8 +229,8 @@ TimeStepLimits Simulation<D>::limits_at_rest() const {
     double g = 0;
     for (int d = 0; d < D; ++d)
         g += cfg_.gravity[d] * cfg_.gravity[d];
-    // u_max_ is the initial state's largest speed over every rank (initial_share).
-    return particle_time_step(ts_params_, scheme_->cfl_speed(), u_max_, std::sqrt(g));
+    // The clock's u_max is the initial state's largest speed over every rank (initial_share).
+    return particle_time_step(ts_params_, scheme_->cfl_speed(), clock_.u_max, std::sqrt(g));
 }
 
 template <int D>
@@ -305,11 +314,8 @@ void Simulation<D>::build_graph() {
     // The scheme declares the stages (and their halo exchanges); the per-group results of a
     // step are everyone's.
     const std::size_t groups = topo_.neighbours.size();
-    group_limits_.assign(groups, {});
-    group_failure_.assign(groups, {});
-    group_speed_.assign(groups, 0.0);
+    results_.assign(groups);
     neighbours_.resize(groups);
-    group_disp2_.assign(groups, 0.0);
     group_busy_.assign(groups, 0.0);
     graph_steps_ = 0;
 
@@ -333,7 +339,7 @@ void Simulation<D>::step() {
     post_step_report(task_error);
     add_node_times();
     if (trace_)
-        trace_->add_work(steps_ + 2, "bookkeeping", t_graph, tasks::clock_seconds());
+        trace_->add_work(clock_.steps + 2, "bookkeeping", t_graph, tasks::clock_seconds());
     agree_on_step(); // throws on every rank if anything failed on any
     advance_time();
     between_steps();
@@ -346,7 +352,7 @@ std::string Simulation<D>::run_graphs() {
     try {
         // A throwing task does not stop the graph: its messages still go out, so every rank
         // completes the step and learns of the error in the step's agreement.
-        scheme_->run();
+        scheme_->run(*graph_);
     } catch (const std::exception& e) {
         return e.what();
     }
@@ -369,7 +375,7 @@ void Simulation<D>::add_node_times() {
         if (!trace_)
             trace_ = std::make_unique<tasks::TraceRecorder>(comm_.rank(), stage_names(),
                                                             opts_.trace_max_events);
-        trace_->add_step(steps_ + 1, *graph_, between_);
+        trace_->add_step(clock_.steps + 1, *graph_, between_);
     }
     between_.clear();
 }
@@ -377,17 +383,17 @@ void Simulation<D>::add_node_times() {
 template <int D>
 void Simulation<D>::advance_time() {
     P_.swap_buffers();
-    time_ += dt_;
-    ++steps_;
-    dt_prev_ = dt_;
+    clock_.time += clock_.dt;
+    ++clock_.steps;
+    clock_.dt_prev = clock_.dt;
     if (!cfg_.fixed_dt)
-        dt_ = limits_.min();
+        clock_.dt = limits_.min();
 }
 
 template <int D>
 void Simulation<D>::between_steps() {
     if (comm_.parallel())
-        balance_.add_step(steps_, last_busy_);
+        balance_.add_step(clock_.steps, last_busy_);
     if (neighbours_.expire(disp2_max_)) {
         const auto t0 = std::chrono::steady_clock::now();
         const double t1 = tasks::clock_seconds();
@@ -395,7 +401,7 @@ void Simulation<D>::between_steps() {
         rebin_seconds_ +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         if (trace_)
-            trace_->add_work(steps_ + 1, "rebuild", t1, tasks::clock_seconds());
+            trace_->add_work(clock_.steps + 1, "rebuild", t1, tasks::clock_seconds());
     } else if (balance_.due() == tasks::BalanceDue::now) {
         neighbours_.rebuilt = rebalance_between_rebuilds();
     }
@@ -404,11 +410,11 @@ void Simulation<D>::between_steps() {
 template <int D>
 SolverState Simulation<D>::solver_state() const {
     SolverState s;
-    s.time = time_;
-    s.step = steps_;
-    s.dt = dt_;
-    s.dt_prev = dt_prev_;
-    s.u_max = u_max_;
+    s.time = clock_.time;
+    s.step = clock_.steps;
+    s.dt = clock_.dt;
+    s.dt_prev = clock_.dt_prev;
+    s.u_max = clock_.u_max;
     s.limit_acoustic = limits_.acoustic;
     s.limit_viscous = limits_.viscous;
     s.limit_force = limits_.force;

@@ -41,14 +41,14 @@ void Simulation<D>::apply_rebalance(const PlannedCut& cut, bool at_rebuild) {
     force_regroup_ = true;
     balance_.cuts_moved();
     const double t1 = tasks::clock_seconds();
-    rebalances_.push_back(
-        {steps_, balance_.measured(), cut.plan.predicted, moved_total, t1 - cut.t0, at_rebuild});
+    rebalances_.push_back({clock_.steps, balance_.measured(), cut.plan.predicted, moved_total,
+                           t1 - cut.t0, at_rebuild});
     between_.push_back({"rebalance", -1, true, 0, cut.t0, t1});
     if (opts_.log_rebalances && comm_.rank() == 0)
         fmt::print(stderr,
                    "sluice: rebalance at step {}{}: imbalance {:.3f} -> {:.3f} (predicted), {} "
                    "particles moved, {:.1f} ms\n",
-                   steps_, at_rebuild ? "" : " (between rebuilds)", balance_.measured(),
+                   clock_.steps, at_rebuild ? "" : " (between rebuilds)", balance_.measured(),
                    cut.plan.predicted, moved_total, (t1 - cut.t0) * 1e3);
 }
 

@@ -17,20 +17,20 @@ namespace sluice {
 template <int D>
 void Simulation<D>::post_step_report(const std::string& task_error) {
     TimeStepLimits lim;
-    for (const auto& l : group_limits_)
+    for (const auto& l : results_.limits)
         lim = min(lim, l);
     Real speed = 0;
-    for (Real s : group_speed_)
+    for (Real s : results_.speed)
         speed = std::max(speed, s);
     Real disp2 = 0;
-    for (Real d : group_disp2_)
+    for (Real d : results_.disp2)
         disp2 = std::max(disp2, d);
     PendingStepReport& rep = report_.emplace();
     // A task that threw comes first: the step's other results may be incomplete.
     std::int64_t failed = task_error.empty() ? failure_none : failure_internal;
     if (!task_error.empty())
-        rep.failure = fmt::format("step {}: {}", steps_ + 1, task_error);
-    for (const std::string& f : group_failure_)
+        rep.failure = fmt::format("step {}: {}", clock_.steps + 1, task_error);
+    for (const std::string& f : results_.failure)
         if (!f.empty() && failed == failure_none) {
             failed = failure_physical;
             rep.failure = f;
@@ -85,7 +85,7 @@ void Simulation<D>::agree_on_step() {
         throw RunError(msg);
     }
     limits_ = global;
-    u_max_ = global_speed;
+    clock_.u_max = global_speed;
     disp2_max_ = global_disp2;
     requests_agreed_ = static_cast<unsigned>(agreed);
 }

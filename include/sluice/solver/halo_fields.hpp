@@ -1,77 +1,95 @@
 #pragma once
-// The particle fields of the halo exchanges of one step (docs/ARCHITECTURE.md, "Halo
-// exchanges"). Each carries what the next stage reads of particles owned by a peer:
-//   state     (start of step)  id, kind, x, v, rho, mass,        -> density, walls, accel
-//                              x_ref (with a Verlet skin)
-//   pressure  (after density)  p, p/rho^2, m/rho, and rho        -> walls, accel, drift
-//                              (summation) or the renormalised
-//                              grad rho (delta-SPH)
-//   walls     (after walls)    wall particles: p, rho, mass, v_bc -> accel
-//   velocity  (after kick)     fluid particles: v^{n+1/2}         -> drift (continuity)
-// Each field is one row of a table (the constructor): the particles it carries and the
-// particle arrays it copies, in order; sizes, packing and unpacking follow from the row.
-// Pure data movement between the particle arrays and byte buffers; the step graph decides
-// when, MPI is the runtime's.
+// The halo fields of a step's exchanges (docs/ARCHITECTURE.md, "Halo exchanges"): what a
+// stage's results travel as to the other ranks' next stages. A field is declared once, in the
+// row of the stage that sends it (StageRow::sends, src/solver/step_scheme.hpp): its name, the
+// particles it carries and the per-particle arrays it copies, in order; message sizes, packing
+// and unpacking follow from that declaration, for every scheme. The state at the start of the
+// step (HaloFields::state) is the one field every scheme sends first. Pure data movement
+// between the arrays and byte buffers; the step graph decides when, MPI is the runtime's.
 #include "sluice/core/cell_grid.hpp"
 #include "sluice/core/particles.hpp"
 #include "sluice/solver/halo_plan.hpp"
 #include "sluice/tasks/step_graph.hpp"
 
-#include <array>
 #include <cstring>
 #include <optional>
-#include <type_traits>
 #include <vector>
 
 namespace sluice {
 
+// One per-particle array that a halo field copies: a particle array, or a scheme's own array
+// aligned with the particles (owned, then halo). Its element size, and the copies of element
+// i to and from a buffer, each with the element's size known at compile time (a memcpy of a
+// run-time size is a library call per element). The array is looked up at each use: it grows
+// with the halo, and a swap of buffers leaves the vector where it is.
+struct HaloColumn {
+    std::size_t size = 0;
+    void* array = nullptr; // the std::vector<T> it copies
+    void (*put)(const void* array, std::size_t i, std::byte* to) = nullptr;
+    void (*take)(void* array, std::size_t i, const std::byte* from) = nullptr;
+};
+
+template <class T>
+HaloColumn halo_column(std::vector<T>& array) {
+    return {sizeof(T), &array,
+            [](const void* a, std::size_t i, std::byte* to) {
+                const auto& v = *static_cast<const std::vector<T>*>(a);
+                std::memcpy(to, static_cast<const void*>(&v[i]), sizeof(T));
+            },
+            [](void* a, std::size_t i, const std::byte* from) {
+                auto& v = *static_cast<std::vector<T>*>(a);
+                std::memcpy(static_cast<void*>(&v[i]), from, sizeof(T));
+            }};
+}
+
+// A halo field: its exchange's name (traces, profiles), the particles it carries, and the
+// arrays it copies of each, in order.
+struct HaloField {
+    const char* name = "?";
+    std::optional<Kind> only;        // the particles it carries (all if empty)
+    std::vector<HaloColumn> columns; // per particle, in this order
+    // The state at the start of the step: it brings the halo particles (their kinds select
+    // the particles of the later fields) and, on a rebuild, their cells' particle ranges.
+    bool state = false;
+};
+
+// The halo data of one step graph: the fields of its exchanges, packed for and unpacked from
+// the peers by the halo plan.
 template <int D>
 class HaloFields final : public tasks::HaloData {
 public:
-    enum class What { state, pressure, walls, velocity };
-    std::vector<What> what; // per exchange of the graph
-    // The exchange's name in traces and profiles.
-    [[nodiscard]] const char* name(What w) const { return field(w).name; }
+    std::vector<HaloField> exchanges; // per exchange of the graph (graph_of_rows)
     // Whether the state exchange records the halo cells' particle ranges: only on steps that
     // rebuild the neighbour lists (between rebuilds the particles stay where they were sorted,
     // although they may have moved into the next cell).
     bool assign_cells = true;
 
+    // reference_positions: with a Verlet skin, the state carries x_ref and the halo cells
+    // are those of x_ref (the positions the particles were sorted by).
     HaloFields(Particles<D>& P, CellRanges& ranges, const CellGrid<D>& grid, const HaloPlan& plan,
-               bool summation, bool gradient, bool reference_positions)
-        : P_(P), ranges_(ranges), grid_(grid), plan_(plan), reference_(reference_positions) {
-        using PD = Particles<D>;
-        Field& state = fields_[static_cast<std::size_t>(What::state)];
-        state = {"state",
-                 std::nullopt,
-                 {column<&PD::id>(), column<&PD::kind>(), column<&PD::x>(), column<&PD::v>(),
-                  column<&PD::rho>(), column<&PD::mass>()}};
-        if (reference_)
-            state.columns.push_back(column<&PD::x_ref>());
-        Field& pressure = fields_[static_cast<std::size_t>(What::pressure)];
-        pressure = {"pressure",
+               bool reference_positions)
+        : P_(P), ranges_(ranges), grid_(grid), plan_(plan), reference_(reference_positions) {}
+
+    // The state at the start of the step: id, kind, x, v, rho, mass (and x_ref with a skin).
+    [[nodiscard]] HaloField state() const {
+        HaloField f{"state",
                     std::nullopt,
-                    {column<&PD::p>(), column<&PD::p_over_rho2>(), column<&PD::volume>()}};
-        if (summation)
-            pressure.columns.push_back(column<&PD::rho>());
-        if (gradient)
-            pressure.columns.push_back(column<&PD::grad_rho>());
-        fields_[static_cast<std::size_t>(What::walls)] = {
-            "walls",
-            Kind::wall,
-            {column<&PD::p>(), column<&PD::rho>(), column<&PD::mass>(), column<&PD::v_bc>()}};
-        fields_[static_cast<std::size_t>(What::velocity)] = {
-            "velocity", Kind::fluid, {column<&PD::v_half>()}};
+                    {halo_column(P_.id), halo_column(P_.kind), halo_column(P_.x), halo_column(P_.v),
+                     halo_column(P_.rho), halo_column(P_.mass)},
+                    true};
+        if (reference_)
+            f.columns.push_back(halo_column(P_.x_ref));
+        return f;
     }
 
     [[nodiscard]] std::size_t recv_bytes(int e, int p) const override {
         const auto k = static_cast<std::size_t>(p);
-        return bytes(field(what[static_cast<std::size_t>(e)]), plan_.recv_count[k],
+        return bytes(exchanges[static_cast<std::size_t>(e)], plan_.recv_count[k],
                      plan_.recv_walls[k]);
     }
 
     void pack(int e, int p, tasks::Bytes& out) override {
-        const Field& f = field(what[static_cast<std::size_t>(e)]);
+        const HaloField& f = exchanges[static_cast<std::size_t>(e)];
         const auto k = static_cast<std::size_t>(p);
         out.reserve(out.size() + bytes(f, plan_.send_count[k], plan_.send_walls[k]));
         const std::size_t row = row_bytes(f);
@@ -81,16 +99,15 @@ public:
                     const std::size_t n = out.size();
                     out.resize(n + row);
                     std::byte* to = out.data() + n;
-                    for (const Column& col : f.columns) {
-                        col.put(P_, i, to);
+                    for (const HaloColumn& col : f.columns) {
+                        col.put(col.array, i, to);
                         to += col.size;
                     }
                 }
     }
 
     void unpack(int e, int p, std::span<const std::byte> in) override {
-        const What w = what[static_cast<std::size_t>(e)];
-        const Field& f = field(w);
+        const HaloField& f = exchanges[static_cast<std::size_t>(e)];
         const auto k = static_cast<std::size_t>(p);
         const std::size_t first = plan_.recv_offset[k], last = first + plan_.recv_count[k];
         const std::byte* from = in.data();
@@ -98,52 +115,24 @@ public:
         // the later fields.
         for (std::size_t i = first; i < last; ++i)
             if (!f.only || P_.kind[i] == *f.only)
-                for (const Column& col : f.columns) {
-                    col.take(P_, i, from);
+                for (const HaloColumn& col : f.columns) {
+                    col.take(col.array, i, from);
                     from += col.size;
                 }
-        if (w == What::state && assign_cells)
+        if (f.state && assign_cells)
             assign_halo_cells(first, last);
     }
 
 private:
-    // One particle array a field copies: its element size, and the copies of particle i's
-    // element to and from a buffer, each with the element's size known at compile time (a
-    // memcpy of a run-time size is a library call per element). The arrays are looked up at
-    // each use: they grow with the halo.
-    struct Column {
-        std::size_t size;
-        void (*put)(const Particles<D>&, std::size_t, std::byte*);
-        void (*take)(Particles<D>&, std::size_t, const std::byte*);
-    };
-    template <auto Member>
-    static Column column() {
-        using Element = typename std::remove_reference_t<decltype(std::declval<Particles<D>&>().*
-                                                                  Member)>::value_type;
-        return {sizeof(Element),
-                [](const Particles<D>& P, std::size_t i, std::byte* to) {
-                    std::memcpy(to, static_cast<const void*>(&(P.*Member)[i]), sizeof(Element));
-                },
-                [](Particles<D>& P, std::size_t i, const std::byte* from) {
-                    std::memcpy(static_cast<void*>(&(P.*Member)[i]), from, sizeof(Element));
-                }};
-    }
-    struct Field {
-        const char* name = "?";
-        std::optional<Kind> only; // the particles it carries (all if empty)
-        std::vector<Column> columns;
-    };
-    [[nodiscard]] const Field& field(What w) const { return fields_[static_cast<std::size_t>(w)]; }
-
     // Bytes of one exchange of `f` for n particles of which w are walls.
-    [[nodiscard]] static std::size_t bytes(const Field& f, std::size_t n, std::size_t w) {
+    [[nodiscard]] static std::size_t bytes(const HaloField& f, std::size_t n, std::size_t w) {
         const std::size_t count = !f.only ? n : *f.only == Kind::wall ? w : n - w;
         return count * row_bytes(f);
     }
     // Bytes of one particle's row of `f`.
-    [[nodiscard]] static std::size_t row_bytes(const Field& f) {
+    [[nodiscard]] static std::size_t row_bytes(const HaloField& f) {
         std::size_t row = 0;
-        for (const Column& col : f.columns)
+        for (const HaloColumn& col : f.columns)
             row += col.size;
         return row;
     }
@@ -169,7 +158,6 @@ private:
     const CellGrid<D>& grid_;
     const HaloPlan& plan_;
     bool reference_;
-    std::array<Field, 4> fields_; // per What
 };
 
 } // namespace sluice

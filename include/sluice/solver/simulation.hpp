@@ -21,6 +21,7 @@
 #include "sluice/solver/rank_exchange.hpp"
 #include "sluice/solver/state_check.hpp"
 #include "sluice/solver/step_report.hpp"
+#include "sluice/solver/step_units.hpp"
 #include "sluice/tasks/balance_policy.hpp"
 #include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
@@ -72,8 +73,6 @@ using BalanceSample = tasks::BalanceSample;
 
 template <int D>
 class StepScheme; // src/solver/step_scheme.hpp
-template <int D>
-struct SchemeContext;
 
 // A simulation on this rank: its particles (plus halo copies of its neighbours'), the
 // grid, and the step graph that advances them. On several MPI ranks every rank holds one of
@@ -105,9 +104,9 @@ public:
     // Union of the flags every rank posted before the last step.
     [[nodiscard]] unsigned agreed_requests() const { return requests_agreed_; }
 
-    [[nodiscard]] double time() const { return time_; }
-    [[nodiscard]] long steps() const { return steps_; }
-    [[nodiscard]] double dt() const { return dt_; }
+    [[nodiscard]] double time() const { return clock_.time; }
+    [[nodiscard]] long steps() const { return clock_.steps; }
+    [[nodiscard]] double dt() const { return clock_.dt; }
     // This rank's particles [0, owned()) followed by halo copies. On one rank: all of them.
     [[nodiscard]] const Particles<D>& particles() const { return P_; }
     [[nodiscard]] Particles<D>& particles() { return P_; }
@@ -179,9 +178,8 @@ private:
     void agree_on_step();
     void build_graph();
 
-    // The scheme's stage bodies read and write the state below through this view.
-    template <int>
-    friend struct SchemeContext;
+    // The case's scheme (numerics.scheme), given the units it uses of the state below.
+    std::unique_ptr<StepScheme<D>> make_scheme();
 
     CaseConfig cfg_;
     Particles<D> P_;
@@ -204,17 +202,11 @@ private:
     int decompositions_ = 0;
     int target_groups_ = 1;
 
-    // Per-group results of the step's last stage (drift, correct).
-    std::vector<TimeStepLimits> group_limits_;
-    std::vector<std::string> group_failure_;
-    NeighbourLists<D> neighbours_;  // per group, filled by its first stage; Verlet lists
-    std::vector<Real> group_disp2_; // per group: largest squared displacement from x_ref
-    Real disp2_max_ = 0;            // over all ranks, after the last step
-    std::vector<Real> group_speed_; // largest fluid speed per group (shifting velocity scale)
-    Real u_max_ = 0;
+    GroupResults results_;         // per group, what the step's last stage found
+    NeighbourLists<D> neighbours_; // per group, filled by its first stage; Verlet lists
+    Real disp2_max_ = 0;           // largest squared displacement, all ranks, last step
 
-    double time_ = 0, dt_ = 0, dt_prev_ = 0;
-    long steps_ = 0;
+    StepClock clock_; // t, dt, dt_prev, steps, u_max: the same on every rank
     TimeStepLimits limits_;
     double rebin_seconds_ = 0;
     std::vector<double> stage_busy_;

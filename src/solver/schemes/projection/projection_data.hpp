@@ -1,8 +1,8 @@
 #pragma once
 // State of the projection scheme (docs/PROJECTION.md) that lives beside a Simulation<D>: the
 // per-pair WMLS coefficients of this step, the per-particle rows of the pressure Poisson
-// equation, the Krylov/SOR vectors, the solver's own step graphs and the halo data of the
-// fields they exchange. Private to src/solver.
+// equation, the Krylov/SOR vectors, the solver's own step graphs and their halo data. Private to
+// src/solver.
 #include "sluice/core/particles.hpp"
 #include "sluice/physics/ls_weight.hpp"
 #include "sluice/physics/selected_operators.hpp"
@@ -41,69 +41,6 @@ struct ProjectionGroup {
     Eigen::VectorXd work;
 };
 
-// The fields the projection scheme exchanges between ranks, besides the state at the start of
-// the step (delegated to HaloFields). Each exchange copies one per-particle array for the
-// particles of the halo cells, in the same order as the state exchange.
-template <int D>
-class ProjectionHalo final : public tasks::HaloData {
-public:
-    struct Field {
-        Real* scalar = nullptr;   // one Real per particle, or
-        Vec<D>* vector = nullptr; // one Vec<D> per particle; null = the state (HaloFields)
-    };
-    std::vector<Field> fields; // per exchange of the graph
-
-    ProjectionHalo(HaloFields<D>& state, CellRanges& ranges, const HaloPlan& plan)
-        : state_(state), ranges_(ranges), plan_(plan) {}
-
-    [[nodiscard]] std::size_t recv_bytes(int e, int p) const override {
-        const Field& f = fields[static_cast<std::size_t>(e)];
-        if (f.scalar == nullptr && f.vector == nullptr)
-            return state_.recv_bytes(0, p);
-        return plan_.recv_count[static_cast<std::size_t>(p)] *
-               (f.scalar != nullptr ? sizeof(Real) : sizeof(Vec<D>));
-    }
-
-    void pack(int e, int p, tasks::Bytes& out) override {
-        const Field& f = fields[static_cast<std::size_t>(e)];
-        if (f.scalar == nullptr && f.vector == nullptr) {
-            state_.pack(0, p, out);
-            return;
-        }
-        const auto k = static_cast<std::size_t>(p);
-        out.reserve(plan_.send_count[k] * (f.scalar != nullptr ? sizeof(Real) : sizeof(Vec<D>)));
-        for (CellIndex c : plan_.send_cells[k])
-            for (std::uint32_t i = ranges_.begin[c]; i < ranges_.end[c]; ++i) {
-                if (f.scalar != nullptr)
-                    tasks::put(out, f.scalar[i]);
-                else
-                    tasks::put(out, f.vector[i]);
-            }
-    }
-
-    void unpack(int e, int p, std::span<const std::byte> in) override {
-        const Field& f = fields[static_cast<std::size_t>(e)];
-        if (f.scalar == nullptr && f.vector == nullptr) {
-            state_.unpack(0, p, in);
-            return;
-        }
-        const auto k = static_cast<std::size_t>(p);
-        const std::size_t first = plan_.recv_offset[k], last = first + plan_.recv_count[k];
-        std::size_t pos = 0;
-        for (std::size_t i = first; i < last; ++i) {
-            if (f.scalar != nullptr)
-                tasks::take_into(in, pos, f.scalar[i]);
-            else
-                tasks::take_into(in, pos, f.vector[i]);
-        }
-    }
-
-private:
-    HaloFields<D>& state_;
-    CellRanges& ranges_;
-    const HaloPlan& plan_;
-};
-
 // What a solver graph run does (set by the main thread before each run).
 enum class SolverPhase {
     residual,   // y = x; r = bhat - A y, rhat = r; partials (r,r), (bhat,bhat), and over the
@@ -128,7 +65,8 @@ struct ProjectionData {
     std::vector<Real> r, rhat, dir, v, s, t;
 
     std::vector<ProjectionGroup<D>> groups;
-    std::unique_ptr<ProjectionHalo<D>> main_halo, solver_halo, correct_halo;
+    // The halo data of the three graphs (the step graph's carries the state).
+    std::unique_ptr<HaloFields<D>> main_halo, solver_halo, correct_halo;
     std::unique_ptr<tasks::StepGraph> solver_graph, correct_graph;
 
     SolverPhase phase = SolverPhase::residual;

@@ -14,22 +14,23 @@
 
 namespace sluice {
 
-// The fields the projection scheme's graphs exchange (ProjectionHalo packs them).
-enum class ProjectionField { state, u_star, iterate, pressure };
-
 template <int D>
-class ProjectionScheme final : public StepScheme<D>, private SchemeContext<D> {
+class ProjectionScheme final : public StepScheme<D> {
 public:
-    explicit ProjectionScheme(Simulation<D>& sim) : SchemeContext<D>(sim) {}
+    ProjectionScheme(const CaseParams<D>& params, Particles<D>& P, const RankCells<D>& cells,
+                     NeighbourLists<D>& neighbours, const StepClock& clock, GroupResults& results,
+                     const RankLink& rank)
+        : case_(params), P_(P), cells_(cells), neighbours_(neighbours), clock_(clock),
+          results_(results), rank_(rank) {}
 
     // The projection step builds its own lists every step (its operators use another radius).
     [[nodiscard]] Real skin() const override { return 0; }
     [[nodiscard]] double cfl_speed() const override {
-        return sluice::cfl_sound_speed(true, cfg_.sound_speed);
+        return sluice::cfl_sound_speed(true, case_.cfg.sound_speed);
     }
     void start() override { init_projection(); }
     std::unique_ptr<tasks::StepGraph> build_graph(const GraphSite& site) override;
-    void run() override { run_projection(); }
+    void run(tasks::StepGraph& graph) override { run_projection(graph); }
     [[nodiscard]] const PressureSolveRecord* last_pressure_solve() const override {
         return &proj_->last;
     }
@@ -39,9 +40,7 @@ public:
 
 private:
     void init_projection();
-    void run_projection();
-    // The per-particle array that an exchange of `field` carries this step.
-    typename ProjectionHalo<D>::Field halo_field(ProjectionField field);
+    void run_projection(tasks::StepGraph& graph);
     template <class K>
     void projection_stage(const K& kernel, int stage, int group);
     void solver_stage(int stage, int group);
@@ -50,35 +49,15 @@ private:
     std::string solve_pressure(std::string& error); // non-empty: did not converge
     std::array<double, 7> reduce_partials(int count, bool failed_here);
 
-    using Ctx = SchemeContext<D>;
-    using Ctx::between_;
-    using Ctx::bounds_;
-    using Ctx::cfg_;
-    using Ctx::comm_;
-    using Ctx::dt_;
-    using Ctx::graph_;
-    using Ctx::grid_;
-    using Ctx::group_failure_;
-    using Ctx::group_limits_;
-    using Ctx::group_speed_;
-    using Ctx::h_;
-    using Ctx::kernel_;
-    using Ctx::lists_;
-    using Ctx::momentum_;
-    using Ctx::P_;
-    using Ctx::plan_;
-    using Ctx::planes_;
-    using Ctx::ranges_;
-    using Ctx::rebuilt_;
-    using Ctx::receive_delay_;
-    using Ctx::steps_;
-    using Ctx::time_;
-    using Ctx::topo_;
-    using Ctx::ts_params_;
+    // The units it is lent (step_scheme.hpp).
+    const CaseParams<D> case_;
+    Particles<D>& P_;
+    const RankCells<D> cells_;
+    NeighbourLists<D>& neighbours_;
+    const StepClock& clock_;
+    GroupResults& results_;
+    const RankLink rank_;
 
-    std::unique_ptr<HaloFields<D>> halo_; // the state at the start of the step
-    // The fields of each graph's exchanges, in exchange order (from the stage tables).
-    std::vector<ProjectionField> main_fields_, solver_fields_, correct_fields_;
     // Last member: its graphs live in the Simulation's arena and are destroyed first.
     std::unique_ptr<ProjectionData<D>> proj_;
 };

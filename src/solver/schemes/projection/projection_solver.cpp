@@ -25,7 +25,7 @@ void ProjectionScheme<D>::solver_stage(int stage, int group) {
         G.partial.fill(0);
     if (d.failed)
         return;
-    const NeighbourList<D>& list = lists_[gi];
+    const NeighbourList<D>& list = neighbours_.lists[gi];
     const std::uint32_t lo = list.first;
     const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
     std::vector<Real>& x = P_.p;
@@ -174,7 +174,7 @@ void ProjectionScheme<D>::factor_block(int group) {
     ProjectionData<D>& d = *proj_;
     const auto gi = static_cast<std::size_t>(group);
     ProjectionGroup<D>& G = d.groups[gi];
-    const NeighbourList<D>& list = lists_[gi];
+    const NeighbourList<D>& list = neighbours_.lists[gi];
     const std::uint32_t lo = list.first;
     const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
     const auto in_block = [&](std::uint32_t i, std::uint32_t p) {
@@ -235,7 +235,7 @@ void ProjectionScheme<D>::factor_block(int group) {
         m.val.resize(last + 1);
         m.outer.push_back(static_cast<int>(m.col.size()));
     }
-    G.block.factor(m, cfg_.projection.preconditioner == PressurePreconditioner::block_ilu0
+    G.block.factor(m, case_.cfg.projection.preconditioner == PressurePreconditioner::block_ilu0
                           ? BlockMethod::ilu0
                           : BlockMethod::lu);
 }
@@ -249,12 +249,12 @@ std::array<double, 7> ProjectionScheme<D>::reduce_partials(int count, bool faile
         for (int k = 0; k < count; ++k)
             sum[static_cast<std::size_t>(k)] += G.partial[static_cast<std::size_t>(k)];
     sum[6] = failed_here ? 1.0 : 0.0;
-    if (!comm_.parallel())
+    if (!rank_.comm.parallel())
         return sum;
     const double t0 = tasks::clock_seconds();
-    const auto all = comm_.all_gather(
+    const auto all = rank_.comm.all_gather(
         std::span<const std::byte>(reinterpret_cast<const std::byte*>(sum.data()), sizeof(sum)));
-    between_.push_back({"solver reduce", -1, true, sizeof(sum), t0, tasks::clock_seconds()});
+    rank_.between.push_back({"solver reduce", -1, true, sizeof(sum), t0, tasks::clock_seconds()});
     std::array<double, 7> global{};
     for (const auto& b : all) {
         std::array<double, 7> part{};
@@ -269,7 +269,7 @@ std::array<double, 7> ProjectionScheme<D>::reduce_partials(int count, bool faile
 template <int D>
 std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
     ProjectionData<D>& d = *proj_;
-    const ProjectionSettings& ps = cfg_.projection;
+    const ProjectionSettings& ps = case_.cfg.projection;
     const auto t0 = std::chrono::steady_clock::now();
     bool failed = false;
     const auto run = [&](SolverPhase phase, int count) {
@@ -299,7 +299,7 @@ std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
     // No fluid particle on a Dirichlet row: the level is free; the counts are exact sums.
     if (!failed && g[4] == 0 && g[3] > 0) {
         d.free_level = true;
-        d.gauge = cfg_.background_pressure;
+        d.gauge = case_.cfg.background_pressure;
         d.fluid_rows = g[3];
     }
     // The residual's and the right-hand side's components along lambda (e.x = 0 here).
@@ -457,7 +457,7 @@ std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
             "the pressure Poisson solve ({}) did not converge at step {}, t = {:.6g} s: "
             "relative residual {:.3e} after {} iterations, tolerance {:.3e}{}; raise "
             "projection.max_iterations, loosen projection.tolerance or reduce the time step",
-            name, steps_ + 1, time_ + dt_, rec.residual, it, ps.tolerance,
+            name, clock_.steps + 1, clock_.time + clock_.dt, rec.residual, it, ps.tolerance,
             breakdown.empty() ? std::string() : fmt::format(" (breakdown: {})", breakdown));
     }
     if (!failed)

@@ -42,99 +42,64 @@ std::vector<Vec<D>> lattice_offsets(Real dx, Real re) {
     return out;
 }
 
-const char* field_name(ProjectionField f) {
-    switch (f) {
-    case ProjectionField::state:
-        return "state";
-    case ProjectionField::u_star:
-        return "u_star";
-    case ProjectionField::iterate:
-        return "iterate";
-    case ProjectionField::pressure:
-        return "pressure";
-    }
-    return "?";
-}
-
 } // namespace
 
 template <int D>
 void ProjectionScheme<D>::init_projection() {
     proj_ = std::make_unique<ProjectionData<D>>();
     ProjectionData<D>& d = *proj_;
-    d.re = Real(kernel_support_factor(cfg_.kernel) * h_);
-    d.surface_diameter = Real(cfg_.projection.surface_diameter_over_dx * cfg_.dx);
-    d.collision_distance = Real(physics::wall_collision_distance_over_dx * cfg_.dx);
-    d.selections = {cfg_.neighbours.gradient, cfg_.neighbours.laplacian,
-                    cfg_.neighbours.free_surface};
-    const std::vector<Vec<D>> lattice = lattice_offsets<D>(Real(cfg_.dx), d.re);
+    d.re = Real(kernel_support_factor(case_.cfg.kernel) * case_.h);
+    d.surface_diameter = Real(case_.cfg.projection.surface_diameter_over_dx * case_.cfg.dx);
+    d.collision_distance = Real(physics::wall_collision_distance_over_dx * case_.cfg.dx);
+    d.selections = {case_.cfg.neighbours.gradient, case_.cfg.neighbours.laplacian,
+                    case_.cfg.neighbours.free_surface};
+    const std::vector<Vec<D>> lattice = lattice_offsets<D>(Real(case_.cfg.dx), d.re);
     for (const Vec<D>& o : lattice)
         d.n0 += physics::ls_weight(o.norm(), d.re, d.weight);
     const auto st = physics::wmls_stencil<D>(lattice, d.re, d.weight);
     d.lattice_sum = st.laplacian.sum();
     // Incompressible: every fluid particle keeps rho0 and the volume dx^D.
-    const Real volume = Real(std::pow(cfg_.dx, D));
+    const Real volume = Real(std::pow(case_.cfg.dx, D));
     for (std::size_t i = 0; i < P_.size(); ++i)
         if (P_.kind[i] == Kind::fluid) {
-            P_.rho[i] = Real(cfg_.rho0);
-            P_.mass[i] = Real(cfg_.rho0) * volume;
+            P_.rho[i] = Real(case_.cfg.rho0);
+            P_.mass[i] = Real(case_.cfg.rho0) * volume;
         }
-    // Only the state exchange of these fields is used (reference positions: no skin).
-    halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, false, false, false);
-    d.main_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
-    d.solver_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
-    d.correct_halo = std::make_unique<ProjectionHalo<D>>(*halo_, ranges_, plan_);
+    // No skin: the state carries no reference positions.
+    for (auto* halo : {&d.main_halo, &d.solver_halo, &d.correct_halo})
+        *halo = std::make_unique<HaloFields<D>>(P_, cells_.ranges, cells_.grid, rank_.plan, false);
 }
 
 template <int D>
 std::unique_ptr<tasks::StepGraph> ProjectionScheme<D>::build_graph(const GraphSite& site) {
     using tasks::Reach;
-    using Row = StageRow<ProjectionField>;
-    using Field = ProjectionField;
     ProjectionData<D>& d = *proj_;
     d.groups.resize(site.neighbours->size());
-    // The stages of the three graphs, one row each.
-    const std::vector<Row> main{{"stencil", Reach::neighbourhood, Field::u_star},
-                                {"ppe_source", Reach::neighbourhood, std::nullopt}};
-    const std::vector<Row> solver{{"ppe_prepare", Reach::self, Field::iterate},
-                                  {"ppe_apply", Reach::neighbourhood, std::nullopt}};
-    const std::vector<Row> correct{{"correct", Reach::neighbourhood, std::nullopt}};
-    if (site.parallel)
-        halo_->what.assign(1, HaloFields<D>::What::state); // ProjectionHalo delegates the state
+    // The stages of the three graphs, one row each, with the halo field each sends.
+    const std::vector<StageRow> main{{"stencil", Reach::neighbourhood,
+                                      HaloField{"u_star", std::nullopt, {halo_column(d.u_star)}}},
+                                     {"ppe_source", Reach::neighbourhood, std::nullopt}};
+    const std::vector<StageRow> solver{
+        {"ppe_prepare", Reach::self, HaloField{"iterate", std::nullopt, {halo_column(d.y)}}},
+        {"ppe_apply", Reach::neighbourhood, std::nullopt}};
+    const std::vector<StageRow> correct{{"correct", Reach::neighbourhood, std::nullopt}};
     // The old graphs live in the arena too.
     d.solver_graph.reset();
     d.correct_graph.reset();
-    auto graph = graph_of_rows(
-        main, std::optional<Field>(Field::state), field_name,
+    auto graph = graph_of_rows<D>(
+        main, d.main_halo->state(),
         [this](int stage, int group) {
-            std::visit([&](const auto& k) { projection_stage(k, stage, group); }, kernel_);
+            std::visit([&](const auto& k) { projection_stage(k, stage, group); }, case_.kernel);
         },
-        site, d.main_halo.get(), main_fields_);
-    d.solver_graph = graph_of_rows(
-        solver, std::optional<Field>(), field_name,
-        [this](int stage, int group) { solver_stage(stage, group); }, site, d.solver_halo.get(),
-        solver_fields_);
-    d.correct_graph = graph_of_rows(
-        correct, std::optional<Field>(Field::pressure), field_name,
-        [this](int, int group) { correct_stage(group); }, site, d.correct_halo.get(),
-        correct_fields_);
+        site, *d.main_halo);
+    d.solver_graph = graph_of_rows<D>(
+        solver, std::nullopt, [this](int stage, int group) { solver_stage(stage, group); }, site,
+        *d.solver_halo);
+    // The correction reads the neighbours' pressures, the solution of the solve.
+    d.correct_graph = graph_of_rows<D>(
+        correct, HaloField{"pressure", std::nullopt, {halo_column(P_.p)}},
+        [this](int, int group) { correct_stage(group); }, site, *d.correct_halo);
     return graph;
-}
-
-template <int D>
-typename ProjectionHalo<D>::Field ProjectionScheme<D>::halo_field(ProjectionField field) {
-    ProjectionData<D>& d = *proj_;
-    switch (field) {
-    case ProjectionField::state:
-        return {}; // HaloFields' state exchange
-    case ProjectionField::u_star:
-        return {nullptr, d.u_star.data()};
-    case ProjectionField::iterate:
-        return {d.y.data(), nullptr};
-    case ProjectionField::pressure:
-        return {P_.p.data(), nullptr};
-    }
-    return {};
 }
 
 // Stage 0 "stencil": neighbour list, WMLS coefficients, free surface, number density, wall
@@ -147,10 +112,11 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
     if (d.failed)
         return;
     const auto gi = static_cast<std::size_t>(group);
-    Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x), kernel.support()};
-    NeighbourList<D>& list = lists_[gi];
+    Neighbourhood<D> nb{&cells_.grid, &cells_.ranges, std::span<const Vec<D>>(P_.x),
+                        kernel.support()};
+    NeighbourList<D>& list = neighbours_.lists[gi];
     ProjectionGroup<D>& G = d.groups[gi];
-    const auto& cells = topo_.cells[gi];
+    const auto& cells = cells_.topo.cells[gi];
     const Real re = d.re;
     const physics::LsWeight weight = d.weight;
     if (stage == 0) {
@@ -161,7 +127,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
             [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; });
         G.lap.resize(list.pairs);
         G.grad.resize(list.pairs);
-        if (cfg_.projection.correction_gradient == CorrectionGradient::first_order)
+        if (case_.cfg.projection.correction_gradient == CorrectionGradient::first_order)
             G.grad_correct.resize(list.pairs);
         G.a.resize(list.pairs);
     }
@@ -184,7 +150,8 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                     const Real w = physics::ls_weight(off.norm(), re, physics::LsWeight::smooth);
                     G.a[p] = w;
                     wsum += w;
-                    rhs += w * physics::wall_row_term<D>(Real(cfg_.rho0), momentum_.gravity, -off);
+                    rhs += w * physics::wall_row_term<D>(Real(case_.cfg.rho0),
+                                                         case_.momentum.gravity, -off);
                 }
                 for (std::uint32_t p = b; p < e; ++p)
                     G.a[p] = wsum > 0 ? G.a[p] / wsum : 0;
@@ -192,7 +159,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 d.bhat[i] = wsum > 0 ? rhs / wsum : 0;
                 // The wall row says dp/dn = rho0 g.n = rho0/dt (u*_w - u_w).n: the divergence
                 // of u* must see the same u*_w = u_w + dt g (docs/PROJECTION.md, "Walls").
-                d.u_star[i] = P_.v[i] + dt_ * momentum_.gravity;
+                d.u_star[i] = P_.v[i] + clock_.dt * case_.momentum.gravity;
                 continue;
             }
             if (P_.kind[i] == Kind::wall)
@@ -214,10 +181,10 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                     G.scratch_offsets.push_back(off);
                     G.scratch_pairs.push_back(p);
                     n += list.factor[p];
-                    if (cfg_.projection.fluid_collision && P_.kind[j] == Kind::fluid)
+                    if (case_.cfg.projection.fluid_collision && P_.kind[j] == Kind::fluid)
                         v_i += physics::collision_velocity_change<D>(
                             P_.v[i], P_.v[j], off, d.collision_distance,
-                            physics::fluid_collision_restitution, Real(dt_));
+                            physics::fluid_collision_restitution, Real(clock_.dt));
                 }
                 d.number_density[i] = n;
                 // The WMLS fits and the surface test, each over its operator's neighbours
@@ -225,12 +192,12 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 const std::span<const Vec<D>> offsets(G.scratch_offsets);
                 const std::size_t count = offsets.size();
                 const bool first_order =
-                    cfg_.projection.correction_gradient == CorrectionGradient::first_order;
+                    case_.cfg.projection.correction_gradient == CorrectionGradient::first_order;
                 G.scratch_grad.resize(count);
                 G.scratch_lap.resize(count);
                 G.scratch_linear.resize(first_order ? count : 0);
                 const auto ops = physics::selected_operators<D>(
-                    offsets, d.selections, re, Real(cfg_.dx), weight, d.surface_diameter,
+                    offsets, d.selections, re, Real(case_.cfg.dx), weight, d.surface_diameter,
                     std::span<Vec<D>>(G.scratch_grad), std::span<Real>(G.scratch_lap),
                     std::span<Vec<D>>(G.scratch_linear), G.scratch_ops);
                 Vec<D> lap_u = Vec<D>::Zero();
@@ -251,12 +218,13 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 }
                 const bool surface = !ops.ok || ops.free_surface ||
                                      physics::below_surface_density(
-                                         n, d.n0, Real(cfg_.projection.surface_density_ratio));
+                                         n, d.n0, Real(case_.cfg.projection.surface_density_ratio));
                 d.row[i] = surface ? PpeRow::surface : PpeRow::fluid;
                 // A stencil that cannot fit second derivatives gives no viscous term.
-                d.u_star[i] = physics::predicted_velocity<D>(
-                    v_i, ops.laplacian_ok ? lap_u : Vec<D>::Zero(),
-                    Real(cfg_.viscosity / cfg_.rho0), momentum_.gravity, Real(dt_));
+                d.u_star[i] =
+                    physics::predicted_velocity<D>(v_i, ops.laplacian_ok ? lap_u : Vec<D>::Zero(),
+                                                   Real(case_.cfg.viscosity / case_.cfg.rho0),
+                                                   case_.momentum.gravity, Real(clock_.dt));
                 continue;
             }
             // Stage 1.
@@ -274,15 +242,15 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 d.bhat[i] = 0;
                 continue;
             }
-            const Real src =
-                physics::ppe_source(Real(cfg_.rho0), Real(dt_), Real(cfg_.projection.gamma), div,
-                                    d.number_density[i], d.n0);
+            const Real src = physics::ppe_source(Real(case_.cfg.rho0), Real(clock_.dt),
+                                                 Real(case_.cfg.projection.gamma), div,
+                                                 d.number_density[i], d.n0);
             for (std::uint32_t p = b; p < e; ++p)
                 G.a[p] = G.lap[p] / sum;
             d.bhat[i] = -src / sum;
         }
-    if (stage == 1 && cfg_.projection.solver == PressureSolver::bicgstab &&
-        cfg_.projection.preconditioner != PressurePreconditioner::jacobi)
+    if (stage == 1 && case_.cfg.projection.solver == PressureSolver::bicgstab &&
+        case_.cfg.projection.preconditioner != PressurePreconditioner::jacobi)
         factor_block(group);
 }
 
@@ -292,17 +260,17 @@ template <int D>
 void ProjectionScheme<D>::correct_stage(int group) {
     ProjectionData<D>& d = *proj_;
     const auto gi = static_cast<std::size_t>(group);
-    const NeighbourList<D>& list = lists_[gi];
+    const NeighbourList<D>& list = neighbours_.lists[gi];
     const ProjectionGroup<D>& G = d.groups[gi];
     const std::vector<Vec<D>>& grad_coefficient =
-        cfg_.projection.correction_gradient == CorrectionGradient::first_order ? G.grad_correct
-                                                                               : G.grad;
+        case_.cfg.projection.correction_gradient == CorrectionGradient::first_order ? G.grad_correct
+                                                                                    : G.grad;
     const std::uint32_t lo = list.first;
     const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
     TimeStepLimits lim;
     Real speed = 0;
     std::string failure;
-    const Real g_norm = momentum_.gravity.norm();
+    const Real g_norm = case_.momentum.gravity.norm();
     const physics::PressureLevel level =
         d.free_level ? physics::PressureLevel::free : physics::PressureLevel::surface;
     for (std::uint32_t i = lo; i < hi; ++i) {
@@ -323,61 +291,57 @@ void ProjectionScheme<D>::correct_stage(int group) {
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             grad +=
                 grad_coefficient[p] * (physics::gradient_pressure(P_.p[list.j[p]], level) - p_ref);
-        Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, Real(cfg_.rho0), Real(dt_));
+        Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, Real(case_.cfg.rho0),
+                                                  Real(clock_.dt));
         const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             if (P_.kind[list.j[p]] == Kind::wall) {
                 Vec<D> offset = P_.x[list.j[p]] - P_.x[i];
                 if (list.periodic)
                     offset -= list.shift[p];
-                v = physics::wall_collision<D>(v, offset, collision, Real(dt_));
+                v = physics::wall_collision<D>(v, offset, collision, Real(clock_.dt));
             }
-        Vec<D> x = projection_drift<D>(P_.x[i], v, Real(dt_), planes_, Real(cfg_.restitution));
-        grid_.wrap(x);
-        P_.a[i] = (v - P_.v[i]) / dt_;
+        Vec<D> x = projection_drift<D>(P_.x[i], v, Real(clock_.dt), case_.planes,
+                                       Real(case_.cfg.restitution));
+        cells_.grid.wrap(x);
+        P_.a[i] = (v - P_.v[i]) / clock_.dt;
         P_.v_half[i] = v;
         P_.x_next[i] = x;
         P_.v_next[i] = v;
         P_.rho_next[i] = P_.rho[i];
         // The force limit sees at least gravity, which the predictor integrates explicitly.
-        lim = min(lim, particle_time_step(ts_params_, cfl_sound_speed(true, cfg_.sound_speed),
-                                          v.norm(), std::max(P_.a[i].norm(), g_norm)));
+        lim = min(lim,
+                  particle_time_step(case_.time_step, cfl_sound_speed(true, case_.cfg.sound_speed),
+                                     v.norm(), std::max(P_.a[i].norm(), g_norm)));
         speed = std::max(speed, v.norm());
         if (failure.empty()) {
-            const std::string what = state_fault(bounds_, x, v, P_.rho[i]);
+            const std::string what = state_fault(case_.bounds, x, v, P_.rho[i]);
             if (!what.empty())
                 failure = fmt::format("particle {} reached {} at step {}, t = {:.6g} s: x = [{}], "
                                       "v = [{}]",
-                                      P_.id[i], what, steps_ + 1, time_ + dt_,
+                                      P_.id[i], what, clock_.steps + 1, clock_.time + clock_.dt,
                                       fmt::join(x.data(), x.data() + D, ", "),
                                       fmt::join(v.data(), v.data() + D, ", "));
         }
     }
-    group_limits_[gi] = lim;
-    group_speed_[gi] = speed;
-    group_failure_[gi] = std::move(failure);
+    results_.limits[gi] = lim;
+    results_.speed[gi] = speed;
+    results_.failure[gi] = std::move(failure);
 }
 
 template <int D>
-void ProjectionScheme<D>::run_projection() {
+void ProjectionScheme<D>::run_projection(tasks::StepGraph& graph) {
     ProjectionData<D>& d = *proj_;
     d.resize(P_.size());
     d.failed = false;
-    halo_->assign_cells = rebuilt_;
-    for (auto [halo, fields] : {std::pair{d.main_halo.get(), &main_fields_},
-                                std::pair{d.solver_halo.get(), &solver_fields_},
-                                std::pair{d.correct_halo.get(), &correct_fields_}}) {
-        halo->fields.clear();
-        for (ProjectionField f : *fields)
-            halo->fields.push_back(halo_field(f));
-    }
+    d.main_halo->assign_cells = neighbours_.rebuilt;
     for (tasks::StepGraph* g : {d.solver_graph.get(), d.correct_graph.get()})
-        g->inject_receive_delay(receive_delay_);
+        g->inject_receive_delay(rank_.receive_delay);
     // A task that throws must not leave peers waiting: every rank runs every graph and every
     // reduction of the solve; the error is raised after the last one.
     std::string error;
     try {
-        graph_->run();
+        graph.run();
     } catch (const std::exception& e) {
         error = e.what();
         d.failed = true;
@@ -391,8 +355,8 @@ void ProjectionScheme<D>::run_projection() {
     }
     // Every rank has the same message (the decision came from global sums); the step's
     // reduction raises it as a RunError.
-    if (!unconverged.empty() && !group_failure_.empty())
-        group_failure_[0] = unconverged;
+    if (!unconverged.empty() && !results_.failure.empty())
+        results_.failure[0] = unconverged;
     if (!error.empty())
         throw std::runtime_error(error);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The weakly compressible scheme (docs/ARCHITECTURE.md, "The step as a graph"): its stage
-// table and stage bodies (wcsph_stages.cpp) and the halo fields they send (halo_fields.hpp).
+// table, the halo fields its stages send, and the stage bodies (wcsph_stages.cpp).
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/riemann.hpp"
 #include "sluice/solver/halo_fields.hpp"
@@ -18,22 +18,26 @@ namespace sluice {
 enum class WcsphStage : std::uint8_t;
 
 template <int D>
-class WcsphScheme final : public StepScheme<D>, private SchemeContext<D> {
+class WcsphScheme final : public StepScheme<D> {
 public:
-    explicit WcsphScheme(Simulation<D>& sim);
+    // fail_step: the step in which this rank's drift throws (--debug-fail-*), or -1.
+    WcsphScheme(const CaseParams<D>& params, Particles<D>& P, const RankCells<D>& cells,
+                NeighbourLists<D>& neighbours, const StepClock& clock, GroupResults& results,
+                const RankLink& rank, long fail_step);
 
-    [[nodiscard]] Real skin() const override { return Real(cfg_.neighbour_skin * cfg_.dx); }
+    [[nodiscard]] Real skin() const override {
+        return Real(case_.cfg.neighbour_skin * case_.cfg.dx);
+    }
     [[nodiscard]] double cfl_speed() const override {
-        return sluice::cfl_sound_speed(false, cfg_.sound_speed);
+        return sluice::cfl_sound_speed(false, case_.cfg.sound_speed);
     }
     std::unique_ptr<tasks::StepGraph> build_graph(const GraphSite& site) override;
-    void run() override;
+    void run(tasks::StepGraph& graph) override;
 
 private:
-    using What = typename HaloFields<D>::What;
     using StageKind = WcsphStage;
     struct Stage {
-        StageRow<What> row;
+        StageRow row;
         StageKind kind;
     };
     // The step's stages, one row each (wcsph_stages.cpp).
@@ -42,37 +46,15 @@ private:
     template <class K>
     void run_stage_with(const K& kernel, int stage, int group);
 
-    using Ctx = SchemeContext<D>;
-    using Ctx::between_;
-    using Ctx::bounds_;
-    using Ctx::cfg_;
-    using Ctx::comm_;
-    using Ctx::dt_;
-    using Ctx::dt_prev_;
-    using Ctx::eos_;
-    using Ctx::graph_;
-    using Ctx::grid_;
-    using Ctx::group_disp2_;
-    using Ctx::group_failure_;
-    using Ctx::group_limits_;
-    using Ctx::group_speed_;
-    using Ctx::h_;
-    using Ctx::kernel_;
-    using Ctx::lists_;
-    using Ctx::momentum_;
-    using Ctx::opts_;
-    using Ctx::P_;
-    using Ctx::plan_;
-    using Ctx::planes_;
-    using Ctx::ranges_;
-    using Ctx::rebuilt_;
-    using Ctx::skin_;
-    using Ctx::steps_;
-    using Ctx::time_;
-    using Ctx::topo_;
-    using Ctx::ts_params_;
-    using Ctx::u_max_;
-    using Ctx::wide_;
+    // The units it is lent (step_scheme.hpp).
+    const CaseParams<D> case_;
+    Particles<D>& P_;
+    const RankCells<D> cells_;
+    NeighbourLists<D>& neighbours_;
+    const StepClock& clock_;
+    GroupResults& results_;
+    const RankLink rank_;
+    long fail_step_;
 
     RiemannParams<D> riemann_; // numerics.dissipation = "riemann"
     bool riemann_dissipation_ = false;

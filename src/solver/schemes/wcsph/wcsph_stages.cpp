@@ -19,20 +19,24 @@
 namespace sluice {
 
 template <int D>
-WcsphScheme<D>::WcsphScheme(Simulation<D>& sim) : SchemeContext<D>(sim) {
-    const CaseConfig& cfg = cfg_;
+WcsphScheme<D>::WcsphScheme(const CaseParams<D>& params, Particles<D>& P, const RankCells<D>& cells,
+                            NeighbourLists<D>& neighbours, const StepClock& clock,
+                            GroupResults& results, const RankLink& rank, long fail_step)
+    : case_(params), P_(P), cells_(cells), neighbours_(neighbours), clock_(clock),
+      results_(results), rank_(rank), fail_step_(fail_step) {
+    const CaseConfig& cfg = case_.cfg;
     continuity_ = cfg.density == DensityScheme::continuity;
-    delta_h_c0_ = continuity_ ? cfg.delta_sph * h_ * cfg.sound_speed : 0.0;
+    delta_h_c0_ = continuity_ ? cfg.delta_sph * case_.h * cfg.sound_speed : 0.0;
     diffusion_ = DensityDiffusionParams<D>{Real(delta_h_c0_), cfg.density_diffusion,
-                                           Real(cfg.rho0) * momentum_.gravity /
+                                           Real(cfg.rho0) * case_.momentum.gravity /
                                                Real(cfg.sound_speed * cfg.sound_speed)};
     density_gradient_ = delta_h_c0_ > 0 && cfg.density_diffusion == DensityDiffusion::antuono;
     riemann_dissipation_ = cfg.dissipation == Dissipation::riemann;
-    riemann_ = RiemannParams<D>{
-        momentum_.gravity, Real(cfg.rho0), Real(cfg.sound_speed),  Real(3),
-        momentum_.mu,      momentum_.h,    momentum_.wall_viscous, momentum_.p_floor};
-    halo_ = std::make_unique<HaloFields<D>>(P_, ranges_, grid_, plan_, !continuity_,
-                                            density_gradient_, skin() > 0);
+    riemann_ = RiemannParams<D>{case_.momentum.gravity,      Real(cfg.rho0),
+                                Real(cfg.sound_speed),       Real(3),
+                                case_.momentum.mu,           case_.momentum.h,
+                                case_.momentum.wall_viscous, case_.momentum.p_floor};
+    halo_ = std::make_unique<HaloFields<D>>(P_, cells_.ranges, cells_.grid, rank_.plan, skin() > 0);
 }
 
 enum class WcsphStage : std::uint8_t { density, walls, accel, kick, drift };
@@ -40,16 +44,31 @@ enum class WcsphStage : std::uint8_t { density, walls, accel, kick, drift };
 template <int D>
 std::vector<typename WcsphScheme<D>::Stage> WcsphScheme<D>::stage_table() const {
     using tasks::Reach;
-    // Before the first stage the state travels.
+    // Each row: the stage, and the halo field its results travel as (the particles it
+    // carries, the arrays it copies: what the next stages read of a neighbour). Before the
+    // first stage the state travels.
     std::vector<Stage> rows;
-    rows.push_back({{"density", Reach::neighbourhood, What::pressure}, StageKind::density});
-    if (cfg_.walls == WallModel::dummy)
-        rows.push_back({{"walls", Reach::neighbourhood, What::walls}, StageKind::walls});
+    HaloField pressure{"pressure",
+                       std::nullopt,
+                       {halo_column(P_.p), halo_column(P_.p_over_rho2), halo_column(P_.volume)}};
+    if (!continuity_) // summation density
+        pressure.columns.push_back(halo_column(P_.rho));
+    if (density_gradient_)
+        pressure.columns.push_back(halo_column(P_.grad_rho));
+    rows.push_back({{"density", Reach::neighbourhood, pressure}, StageKind::density});
+    if (case_.cfg.walls == WallModel::dummy)
+        rows.push_back({{"walls", Reach::neighbourhood,
+                         HaloField{"walls",
+                                   Kind::wall,
+                                   {halo_column(P_.p), halo_column(P_.rho), halo_column(P_.mass),
+                                    halo_column(P_.v_bc)}}},
+                        StageKind::walls});
     rows.push_back({{"accel", Reach::neighbourhood, std::nullopt}, StageKind::accel});
     // The continuity rate reads the neighbours' kicked velocities; summation needs nothing.
-    rows.push_back(
-        {{"kick", Reach::self, continuity_ ? std::optional<What>(What::velocity) : std::nullopt},
-         StageKind::kick});
+    std::optional<HaloField> velocity;
+    if (continuity_)
+        velocity = HaloField{"velocity", Kind::fluid, {halo_column(P_.v_half)}};
+    rows.push_back({{"kick", Reach::self, velocity}, StageKind::kick});
     rows.push_back({{"drift", continuity_ ? Reach::neighbourhood : Reach::self, std::nullopt},
                     StageKind::drift});
     return rows;
@@ -57,33 +76,34 @@ std::vector<typename WcsphScheme<D>::Stage> WcsphScheme<D>::stage_table() const 
 
 template <int D>
 std::unique_ptr<tasks::StepGraph> WcsphScheme<D>::build_graph(const GraphSite& site) {
-    std::vector<StageRow<What>> rows;
+    std::vector<StageRow> rows;
     stage_kinds_.clear();
     for (const Stage& s : stage_table()) {
         rows.push_back(s.row);
         stage_kinds_.push_back(s.kind);
     }
-    return graph_of_rows(
-        rows, std::optional<What>(What::state), [this](What w) { return halo_->name(w); },
-        [this](int stage, int group) { run_stage(stage, group); }, site, halo_.get(), halo_->what);
+    return graph_of_rows<D>(
+        rows, halo_->state(), [this](int stage, int group) { run_stage(stage, group); }, site,
+        *halo_);
 }
 
 template <int D>
-void WcsphScheme<D>::run() {
-    halo_->assign_cells = rebuilt_;
-    graph_->run();
+void WcsphScheme<D>::run(tasks::StepGraph& graph) {
+    halo_->assign_cells = neighbours_.rebuilt;
+    graph.run();
 }
 
 template <int D>
 void WcsphScheme<D>::run_stage(int stage, int group) {
-    std::visit([&](const auto& k) { run_stage_with(k, stage, group); }, kernel_);
+    std::visit([&](const auto& k) { run_stage_with(k, stage, group); }, case_.kernel);
 }
 
 template <int D>
 template <class K>
 void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
-    Neighbourhood<D> nb{&grid_, &ranges_, std::span<const Vec<D>>(P_.x), kernel.support()};
-    NeighbourList<D>& list = lists_[static_cast<std::size_t>(group)];
+    Neighbourhood<D> nb{&cells_.grid, &cells_.ranges, std::span<const Vec<D>>(P_.x),
+                        kernel.support()};
+    NeighbourList<D>& list = neighbours_.lists[static_cast<std::size_t>(group)];
     // The first stage finds the group's neighbours once; every later stage of the step reuses
     // them (positions do not change within a step).
     if (stage == 0) {
@@ -92,17 +112,17 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         // Wall centres list only fluid partners: nothing reads wall-wall pairs.
         const auto partial = [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; };
         const auto wanted = [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; };
-        const auto& group_cells = topo_.cells[static_cast<std::size_t>(group)];
-        if (skin_ <= 0) {
+        const auto& group_cells = cells_.topo.cells[static_cast<std::size_t>(group)];
+        if (neighbours_.skin <= 0) {
             nb.build_list(group_cells, list, factor, partial, wanted);
         } else {
-            NeighbourList<D>& wide = wide_[static_cast<std::size_t>(group)];
-            if (rebuilt_) {
+            NeighbourList<D>& wide = neighbours_.wide[static_cast<std::size_t>(group)];
+            if (neighbours_.rebuilt) {
                 // Built from the positions of the rebuild (equal to x, except in the first
                 // step after a restart).
                 Neighbourhood<D> within_skin = nb;
                 within_skin.x = std::span<const Vec<D>>(P_.x_ref);
-                within_skin.support = nb.support + skin_;
+                within_skin.support = nb.support + neighbours_.skin;
                 within_skin.build_list(
                     group_cells, wide, [](Real r2) { return r2; }, partial, wanted);
             }
@@ -110,34 +130,35 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         }
     }
     nb.list = &list;
-    const auto& cells = topo_.cells[static_cast<std::size_t>(group)];
+    const auto& cells = cells_.topo.cells[static_cast<std::size_t>(group)];
     const StageKind kind = stage_kinds_[static_cast<std::size_t>(stage)];
     switch (kind) {
     case StageKind::density:
         for (CellIndex c : cells) {
-            if (cfg_.density == DensityScheme::summation) {
+            if (case_.cfg.density == DensityScheme::summation) {
                 summation_density(nb, kernel, c, P_, std::span<Real>(P_.rho));
             } else if (density_gradient_) {
                 renormalised_density_gradient(nb, kernel, c, P_, std::span<Vec<D>>(P_.grad_rho));
             }
-            equation_of_state(nb, eos_, c, P_, std::span<Real>(P_.p),
+            equation_of_state(nb, case_.eos, c, P_, std::span<Real>(P_.p),
                               std::span<Real>(P_.p_over_rho2), std::span<Real>(P_.volume));
         }
         break;
     case StageKind::walls:
         for (CellIndex c : cells)
-            dummy_wall_state(nb, kernel, eos_, momentum_.gravity, cfg_.no_slip,
-                             Real(std::pow(cfg_.dx, D)), c, P_);
+            dummy_wall_state(nb, kernel, case_.eos, case_.momentum.gravity, case_.cfg.no_slip,
+                             Real(std::pow(case_.cfg.dx, D)), c, P_);
         break;
     case StageKind::accel:
         for (CellIndex c : cells) {
             if (riemann_dissipation_)
                 riemann_acceleration(nb, kernel, riemann_, c, P_, std::span<Vec<D>>(P_.a));
             else
-                acceleration(nb, kernel, momentum_, c, P_, std::span<Vec<D>>(P_.a));
-            if (cfg_.shifting > 0) {
-                const ShiftingParams sp{Real(cfg_.shifting * u_max_ * h_ * dt_),
-                                        kernel.W(Real(cfg_.dx)), Real(0.1 * cfg_.dx)};
+                acceleration(nb, kernel, case_.momentum, c, P_, std::span<Vec<D>>(P_.a));
+            if (case_.cfg.shifting > 0) {
+                const ShiftingParams sp{
+                    Real(case_.cfg.shifting * clock_.u_max * case_.h * clock_.dt),
+                    kernel.W(Real(case_.cfg.dx)), Real(0.1 * case_.cfg.dx)};
                 particle_shift(nb, kernel, sp, c, P_, std::span<Vec<D>>(P_.shift));
             }
         }
@@ -147,16 +168,16 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         for (CellIndex c : cells)
             for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
                 if (P_.kind[i] == Kind::fluid)
-                    P_.v_half[i] = kick<D>(P_.v_half[i], P_.a[i], Real(dt_prev_), Real(dt_));
+                    P_.v_half[i] =
+                        kick<D>(P_.v_half[i], P_.a[i], Real(clock_.dt_prev), Real(clock_.dt));
         break;
     case StageKind::drift: {
-        if (steps_ + 1 == opts_.debug_fail_step && comm_.rank() == opts_.debug_fail_rank &&
-            group == 0)
+        if (clock_.steps + 1 == fail_step_ && group == 0)
             throw std::runtime_error(fmt::format("deliberate failure of rank {} in step {} "
                                                  "(--debug-fail-rank/--debug-fail-step)",
-                                                 comm_.rank(), steps_ + 1));
+                                                 rank_.comm.rank(), clock_.steps + 1));
         TimeStepExtremes extremes;
-        const Real dt = Real(dt_);
+        const Real dt = Real(clock_.dt);
         Real speed = 0, disp2 = 0;
         std::string failure;
         for (CellIndex c : cells) {
@@ -174,34 +195,34 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                     P_.rho_next[i] = P_.rho[i];
                     continue;
                 }
-                auto [x, v, rho] = leapfrog_drift<D>(P_.x[i], P_.v_half[i], P_.a[i], P_.rho[i],
-                                                     continuity_ ? &P_.drho[i] : nullptr,
-                                                     cfg_.shifting > 0 ? &P_.shift[i] : nullptr, dt,
-                                                     planes_, Real(cfg_.restitution));
-                grid_.wrap(x);
+                auto [x, v, rho] = leapfrog_drift<D>(
+                    P_.x[i], P_.v_half[i], P_.a[i], P_.rho[i], continuity_ ? &P_.drho[i] : nullptr,
+                    case_.cfg.shifting > 0 ? &P_.shift[i] : nullptr, dt, case_.planes,
+                    Real(case_.cfg.restitution));
+                cells_.grid.wrap(x);
                 P_.x_next[i] = x;
                 P_.v_next[i] = v;
                 P_.rho_next[i] = rho;
                 const Real v_norm = v.norm();
-                extremes.add(eos_.sound_speed(rho), v_norm, P_.a[i].squaredNorm());
+                extremes.add(case_.eos.sound_speed(rho), v_norm, P_.a[i].squaredNorm());
                 speed = std::max(speed, v_norm);
                 disp2 = std::max(disp2, (x - P_.x_ref[i]).squaredNorm());
-                if (failure.empty() && !state_healthy(bounds_, x, v, rho)) {
-                    const std::string what = state_fault(bounds_, x, v, rho);
+                if (failure.empty() && !state_healthy(case_.bounds, x, v, rho)) {
+                    const std::string what = state_fault(case_.bounds, x, v, rho);
                     if (!what.empty())
                         failure = fmt::format(
                             "particle {} reached {} at step {}, t = {:.6g} s: x = [{}], v = [{}], "
                             "rho = {:.6g}",
-                            P_.id[i], what, steps_ + 1, time_ + dt_,
+                            P_.id[i], what, clock_.steps + 1, clock_.time + clock_.dt,
                             fmt::join(x.data(), x.data() + D, ", "),
                             fmt::join(v.data(), v.data() + D, ", "), rho);
                 }
             }
         }
-        group_limits_[static_cast<std::size_t>(group)] = extremes.limits(ts_params_);
-        group_speed_[static_cast<std::size_t>(group)] = speed;
-        group_disp2_[static_cast<std::size_t>(group)] = disp2;
-        group_failure_[static_cast<std::size_t>(group)] = std::move(failure);
+        results_.limits[static_cast<std::size_t>(group)] = extremes.limits(case_.time_step);
+        results_.speed[static_cast<std::size_t>(group)] = speed;
+        results_.disp2[static_cast<std::size_t>(group)] = disp2;
+        results_.failure[static_cast<std::size_t>(group)] = std::move(failure);
         break;
     }
     }
