@@ -62,9 +62,13 @@ namespace physics {
 // shifting"): Lind et al. (2012, J. Comput. Phys. 231, 1499), eqs. (21)-(24), after Xu et al.
 // (2009):
 //   dr_i = -D grad C_i,   grad C_i = sum_j V_j [1 + R (W_ij / W(dx))^n] grad_i W_ij,
-//   R = 0.2, n = 4 (Lind's eq. 24: Monaghan's anti-clustering term), D = A h U dt,
-// the same law as WCSPH's particle_shift above (U: the largest fluid speed of the last step).
-// Near a free surface (Lind's section 3.4) only the part tangential to the surface is kept,
+//   R = 0.2, n = 4 (Monaghan's anti-clustering term, as Lind et al. add it).
+// Lind's diffusion coefficient is D = A h |u| dt (WCSPH's particle_shift above uses
+// the largest speed); the projection scheme passes D = A h^2 per step instead, independent of
+// the velocity as in Skillen et al. (2013, Comput. Methods Appl. Mech. Eng. 265, 163), because
+// in still water |u| ~ 0 and the speed-scaled shift did not lower the tank's pressure noise
+// (docs/PROJECTION.md, "Particle shifting").
+// Near a free surface (as Lind et al.) only the part tangential to the surface is kept,
 // the normal being that of the plain concentration gradient sum_j V_j grad_i W_ij; the length
 // is capped. Pure per-pair and per-particle pieces, so the scheme's own neighbour lists can
 // drive them.

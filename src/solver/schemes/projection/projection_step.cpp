@@ -343,14 +343,13 @@ void ProjectionScheme<D>::correct_stage(int group) {
     const Real g_norm = momentum_.gravity.norm();
     const physics::PressureLevel level =
         d.free_level ? physics::PressureLevel::free : physics::PressureLevel::surface;
-    // Particle shifting, D = A h U dt with U the largest fluid speed of the last step (the same
-    // on every rank), added to P8's displacement.
+    // Particle shifting, D = A h^2 per step (not scaled by the flow speed: still water needs
+    // it too), added to P8's displacement.
     const bool shifting = cfg_.projection.shifting > 0 && !d.failed;
     if (shifting)
         std::visit(
             [&](const auto& kernel) {
-                shift_group<D>(kernel, list, P_, d.row,
-                               Real(cfg_.projection.shifting * this->u_max_ * h_ * dt_),
+                shift_group<D>(kernel, list, P_, d.row, Real(cfg_.projection.shifting * h_ * h_),
                                Real(cfg_.dx), Real(0.1 * cfg_.dx), P_.shift);
             },
             kernel_);
