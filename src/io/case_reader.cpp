@@ -395,6 +395,9 @@ void read_projection(const Section& s, CaseConfig& c) {
     p.correction_gradient =
         s.choice("correction_gradient", p.correction_gradient, kCorrectionGradients);
     p.fluid_collision = s.boolean("fluid_collision").value_or(p.fluid_collision);
+    p.shifting = s.number("shifting", p.shifting);
+    s.require(p.shifting >= 0 && p.shifting <= 0.5, "shifting",
+              fmt::format("must be in [0, 0.5] (0 = off; D = A h^2 per step), got {}", p.shifting));
 }
 
 void read_time(const Section& s, CaseConfig& c) {

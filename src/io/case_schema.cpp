@@ -133,6 +133,8 @@ const KeySpec kKeys[] = {
      "Gradient of the velocity correction P7: \"second_order\" (the WMLS fit of the PPE, seed 004) or \"first_order\" (the linear WMLS fit, exact for linear fields; docs/WMLS.md W18)."},
     {"projection", "fluid_collision", "boolean", "", "true", "", Applies::projection, "",
      "Koshizuka-type collision of fluid pairs closer than 0.8 dx that approach (restitution 0.2, momentum-conserving; docs/PROJECTION.md, \"Collisions\")."},
+    {"projection", "shifting", "number", "", "0", "[0, 0.5]", Applies::projection, "",
+     "Fickian particle-shifting coefficient A of the projection scheme (0 = off): each step, displacement −A·h²·Σ(1 + 0.2(W/W(dx))⁴)∇W V from the positions at the start of the step (Lind et al. 2012 with a velocity-independent D = A h², as Skillen et al. 2013); only its tangential part near the free surface; capped at 0.1 dx; no correction of the velocity (docs/PROJECTION.md, \"Particle shifting\")."},
     {"walls", "model", "string", "", "\"none\"", "\"none\", \"reflective\", \"dummy\"", Applies::any, "",
      "\"none\", \"reflective\" (particles bounce off the tank faces) or \"dummy\" (layers of wall particles, Adami et al."},
     {"walls", "tank_lo", "vector", "m", "required unless model = \"none\"", "inside the domain", Applies::any, "walls.model = \"reflective\" | \"dummy\"",

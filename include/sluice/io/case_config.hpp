@@ -130,6 +130,7 @@ struct ProjectionSettings {
     double surface_density_ratio = 0;      // beta: also surface when n < beta n0 (0 = off)
     CorrectionGradient correction_gradient = CorrectionGradient::second_order;
     bool fluid_collision = true; // Koshizuka-type collision of fluid pairs closer than 0.8 dx
+    double shifting = 0;         // Fickian shifting, D = A h^2 per step (0 = off; Lind et al. 2012)
 
     bool operator==(const ProjectionSettings&) const = default;
 };

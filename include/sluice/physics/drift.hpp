@@ -35,11 +35,14 @@ DriftedState<D> leapfrog_drift(const Vec<D>& x, Vec<D>& v_half, const Vec<D>& a,
 }
 
 // Projection scheme (docs/PROJECTION.md, P8): x^{n+1} = x^n + dt v^{n+1} with the corrected
-// velocity v, which a reflection turns; the density is not advanced (the scheme keeps rho0).
+// velocity v, plus the shifting displacement when `shift` is given, which a reflection turns;
+// the density is not advanced (the scheme keeps rho0).
 template <int D>
 Vec<D> projection_drift(const Vec<D>& x, Vec<D>& v, Real dt, const std::vector<Plane<D>>& planes,
-                        Real restitution) {
+                        Real restitution, const Vec<D>* shift = nullptr) {
     Vec<D> moved = x + dt * v;
+    if (shift != nullptr)
+        moved += *shift;
     if (!planes.empty()) {
         Vec<D> unused = v;
         reflect(planes, restitution, moved, unused, v);

@@ -56,4 +56,47 @@ SLUICE_FLATTEN void particle_shift(const Neighbourhood<D>& nb, const K& kernel,
     }
 }
 
+namespace physics {
+
+// Fickian particle shifting of the projection scheme (docs/PROJECTION.md, "Particle
+// shifting"): Lind et al. (2012, J. Comput. Phys. 231, 1499), eqs. (21)-(24), after Xu et al.
+// (2009):
+//   dr_i = -D grad C_i,   grad C_i = sum_j V_j [1 + R (W_ij / W(dx))^n] grad_i W_ij,
+//   R = 0.2, n = 4 (Monaghan's anti-clustering term, as Lind et al. add it).
+// Lind's diffusion coefficient is D = A h |u| dt (WCSPH's particle_shift above uses
+// the largest speed); the projection scheme passes D = A h^2 per step instead, independent of
+// the velocity as in Skillen et al. (2013, Comput. Methods Appl. Mech. Eng. 265, 163), because
+// in still water |u| ~ 0 and the speed-scaled shift did not lower the tank's pressure noise
+// (docs/PROJECTION.md, "Particle shifting").
+// Near a free surface (as Lind et al.) only the part tangential to the surface is kept,
+// the normal being that of the plain concentration gradient sum_j V_j grad_i W_ij; the length
+// is capped. Pure per-pair and per-particle pieces, so the scheme's own neighbour lists can
+// drive them.
+inline constexpr Real shift_anticlustering_R = Real(0.2);
+
+// One pair's term V_j [1 + R (W_ij / W(dx))^4] grad_i W_ij of grad C_i.
+template <int D>
+Vec<D> shift_pair_term(const Vec<D>& grad_w, Real w, Real w_dx, Real volume) {
+    const Real q = w / w_dx;
+    return ((1 + shift_anticlustering_R * (q * q) * (q * q)) * volume) * grad_w;
+}
+
+// dr_i = -coefficient grad_c, without its component along surface_gradient (the plain
+// concentration gradient, pointing into the fluid) when near_surface, capped at max_shift.
+template <int D>
+Vec<D> fickian_shift(Real coefficient, const Vec<D>& grad_c, bool near_surface,
+                     const Vec<D>& surface_gradient, Real max_shift) {
+    Vec<D> dr = -coefficient * grad_c;
+    if (near_surface && surface_gradient.squaredNorm() > 0) {
+        const Vec<D> n = surface_gradient.normalized();
+        dr -= dr.dot(n) * n;
+    }
+    const Real len = dr.norm();
+    if (len > max_shift)
+        dr *= max_shift / len;
+    return dr;
+}
+
+} // namespace physics
+
 } // namespace sluice

@@ -8,6 +8,7 @@
 #include "sluice/physics/drift.hpp"
 #include "sluice/physics/projection.hpp"
 #include "sluice/physics/selected_operators.hpp"
+#include "sluice/physics/shifting.hpp"
 #include "sluice/physics/wmls.hpp"
 
 #include <chrono>
@@ -40,6 +41,43 @@ std::vector<Vec<D>> lattice_offsets(Real dx, Real re) {
             out.push_back(o);
     }
     return out;
+}
+
+// Particle shifting (docs/PROJECTION.md, "Particle shifting"; physics::fickian_shift) of the
+// fluid particles of a group, from the positions at the start of the step, over the step's
+// neighbour list (every particle within re, fluid and wall, each of volume dx^D). Near the
+// free surface: a P5 row or a kernel sum below 0.95 (as WCSPH's particle_shift).
+template <int D, class K>
+void shift_group(const K& kernel, const NeighbourList<D>& list, const Particles<D>& P,
+                 const std::vector<PpeRow>& row, Real coefficient, Real dx, Real max_shift,
+                 std::vector<Vec<D>>& shift) {
+    const Real volume = D == 2 ? dx * dx : dx * dx * dx;
+    const Real w_dx = kernel.W(dx);
+    const std::uint32_t lo = list.first;
+    const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
+    for (std::uint32_t i = lo; i < hi; ++i) {
+        if (P.kind[i] != Kind::fluid)
+            continue;
+        const std::uint32_t k = i - lo;
+        Vec<D> grad_c = Vec<D>::Zero(), grad_plain = Vec<D>::Zero();
+        Real completeness = 0;
+        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p) {
+            Vec<D> r = P.x[i] - P.x[list.j[p]];
+            if (list.periodic)
+                r += list.shift[p];
+            const Real len = r.norm();
+            const Real w = kernel.W(len);
+            completeness += volume * w;
+            if (len <= 0)
+                continue;
+            const Vec<D> grad_w = grad_W<D>(kernel, r, len);
+            grad_c += physics::shift_pair_term<D>(grad_w, w, w_dx, volume);
+            grad_plain += volume * grad_w;
+        }
+        const bool near_surface = row[i] == PpeRow::surface || completeness < Real(0.95);
+        shift[i] =
+            physics::fickian_shift<D>(coefficient, grad_c, near_surface, grad_plain, max_shift);
+    }
 }
 
 } // namespace
@@ -273,6 +311,17 @@ void ProjectionScheme<D>::correct_stage(int group) {
     const Real g_norm = case_.momentum.gravity.norm();
     const physics::PressureLevel level =
         d.free_level ? physics::PressureLevel::free : physics::PressureLevel::surface;
+    // Particle shifting, D = A h^2 per step (not scaled by the flow speed: still water needs
+    // it too), added to P8's displacement.
+    const bool shifting = case_.cfg.projection.shifting > 0 && !d.failed;
+    if (shifting)
+        std::visit(
+            [&](const auto& kernel) {
+                shift_group<D>(kernel, list, P_, d.row,
+                               Real(case_.cfg.projection.shifting * case_.h * case_.h),
+                               Real(case_.cfg.dx), Real(0.1 * case_.cfg.dx), P_.shift);
+            },
+            case_.kernel);
     for (std::uint32_t i = lo; i < hi; ++i) {
         if (P_.kind[i] != Kind::fluid || d.failed) {
             P_.x_next[i] = P_.x[i];
@@ -301,8 +350,9 @@ void ProjectionScheme<D>::correct_stage(int group) {
                     offset -= list.shift[p];
                 v = physics::wall_collision<D>(v, offset, collision, Real(clock_.dt));
             }
-        Vec<D> x = projection_drift<D>(P_.x[i], v, Real(clock_.dt), case_.planes,
-                                       Real(case_.cfg.restitution));
+        Vec<D> x =
+            projection_drift<D>(P_.x[i], v, Real(clock_.dt), case_.planes,
+                                Real(case_.cfg.restitution), shifting ? &P_.shift[i] : nullptr);
         cells_.grid.wrap(x);
         P_.a[i] = (v - P_.v[i]) / clock_.dt;
         P_.v_half[i] = v;
