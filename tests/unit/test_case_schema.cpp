@@ -215,3 +215,27 @@ TEST_CASE("schema: an empty [projection] table is refused under wcsph") {
         CHECK(e.key() == "projection");
     }
 }
+
+TEST_CASE("schema: the projection scheme refuses the WCSPH equation of state, density and walls") {
+    // Each is read by the WCSPH scheme only (the projection scheme keeps rho0 and the volume
+    // dx^D, and its wall particles carry no boundary velocity): under "projection" the key is
+    // named, under "wcsph" it is accepted.
+    const std::vector<std::string> keys = {
+        "fluid.eos=\"tait\"",  "fluid.gamma=7",         "numerics.density=\"summation\"",
+        "walls.no_slip=false", "limits.min_density=10", "limits.max_density=2000"};
+    for (const auto& kv : keys) {
+        const std::string key = kv.substr(0, kv.find('='));
+        INFO(kv);
+        CHECK_NOTHROW((void)read_case_text(base("wcsph"), "schema.toml", {kv}));
+        try {
+            (void)read_case_text(base("projection"), "schema.toml", {kv});
+            FAIL("accepted " << key << " under projection");
+        } catch (const CaseError& e) {
+            CHECK(e.key() == key);
+            CHECK(std::string(e.what()).find("schema.toml") != std::string::npos);
+            CHECK(std::string(e.reason())
+                      .find("applies only to numerics.scheme = \"wcsph\" (the "
+                            "scheme is \"projection\")") != std::string::npos);
+        }
+    }
+}
