@@ -9,8 +9,7 @@
 namespace sluice::case_file {
 
 constexpr const char* kAxis = "xyz";
-inline constexpr double kMaxCoordinate = 1e6; // [m] domain corners
-inline constexpr double kMaxOutputs = 1e7;    // snapshots or probe samples per run
+inline constexpr double kMaxOutputs = 1e7; // snapshots or probe samples per run
 inline constexpr std::size_t kMaxNameLength = 200;
 
 // Tolerance for "inside" tests, relative to the domain size: lattice edges computed by the

@@ -1,11 +1,58 @@
 // The keys of every table of a case file (case_schema.hpp; docs/CASE_REFERENCE.md).
 #include "case_schema.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace sluice::case_file {
+
+namespace {
+
+Range interval(double lo, bool lo_open, double hi, bool hi_open) {
+    Range r;
+    r.lo = lo;
+    r.lo_open = lo_open;
+    r.hi = hi;
+    r.hi_open = hi_open;
+    return r;
+}
+
+} // namespace
+
+Range closed(double lo, double hi) {
+    return interval(lo, false, hi, false);
+}
+Range open(double lo, double hi) {
+    return interval(lo, true, hi, true);
+}
+Range open_closed(double lo, double hi) {
+    return interval(lo, true, hi, false);
+}
+Range closed_open(double lo, double hi) {
+    return interval(lo, false, hi, true);
+}
+Range at_least(double lo) {
+    return interval(lo, false, kInf, true);
+}
+Range above(double lo) {
+    return interval(lo, true, kInf, true);
+}
+Range one_of(std::vector<std::string_view> choices) {
+    Range r;
+    r.choices = std::move(choices);
+    return r;
+}
+Range words(std::string_view w) {
+    Range r;
+    r.words = w;
+    return r;
+}
+
 namespace {
 
 // Keys of a neighbour-selection table; one copy per operator (neighbours.<operator>).
@@ -16,212 +63,212 @@ constexpr std::string_view kOperators[] = {"neighbours.gradient", "neighbours.la
 // clang-format off
 const KeySpec kKeys[] = {
     // The tables of the file.
-    {"", "case", "table", "", "required", "", Applies::any, "", "Name, description and dimension."},
-    {"", "domain", "table", "", "required", "", Applies::any, "", "The box the fluid may occupy."},
-    {"", "fluid", "table", "", "required", "", Applies::any, "", "Fluid properties."},
-    {"", "particles", "table", "", "required", "", Applies::any, "", "Lattice spacing."},
-    {"", "blocks", "array of tables", "", "required", "", Applies::any, "", "Fluid blocks (at least one)."},
-    {"", "numerics", "table", "", "", "", Applies::any, "", "Scheme, kernel and time-step limits."},
-    {"", "walls", "table", "", "", "", Applies::any, "", "Tank walls, planes and obstacles."},
-    {"", "time", "table", "", "required", "", Applies::any, "", "End time and output interval."},
-    {"", "output", "table", "", "", "", Applies::any, "", "Snapshot contents."},
-    {"", "probes", "array of tables", "", "", "", Applies::any, "", "Time series."},
-    {"", "runtime", "table", "", "", "", Applies::any, "", "Performance settings (no effect on results)."},
-    {"", "neighbours", "table", "", "", "", Applies::projection, "", "Neighbour selection per operator."},
-    {"", "checkpoint", "table", "", "", "", Applies::any, "", "When to save the state."},
-    {"", "limits", "table", "", "", "", Applies::any, "", "Blow-up detection."},
-    {"", "projection", "table", "", "", "", Applies::projection, "", "Pressure solve of the projection scheme."},
-    {"neighbours", "gradient", "table", "", "", "", Applies::projection, "", "Neighbours of the WMLS gradient."},
-    {"neighbours", "laplacian", "table", "", "", "", Applies::projection, "", "Neighbours of the WMLS Laplacian."},
-    {"neighbours", "free_surface", "table", "", "", "", Applies::projection, "", "Neighbours of free-surface detection."},
+    {"", "case", "table", "", "required", {}, Applies::any, "", "Name, description and dimension."},
+    {"", "domain", "table", "", "required", {}, Applies::any, "", "The box the fluid may occupy."},
+    {"", "fluid", "table", "", "required", {}, Applies::any, "", "Fluid properties."},
+    {"", "particles", "table", "", "required", {}, Applies::any, "", "Lattice spacing."},
+    {"", "blocks", "array of tables", "", "required", {}, Applies::any, "", "Fluid blocks (at least one)."},
+    {"", "numerics", "table", "", "", {}, Applies::any, "", "Scheme, kernel and time-step limits."},
+    {"", "walls", "table", "", "", {}, Applies::any, "", "Tank walls, planes and obstacles."},
+    {"", "time", "table", "", "required", {}, Applies::any, "", "End time and output interval."},
+    {"", "output", "table", "", "", {}, Applies::any, "", "Snapshot contents."},
+    {"", "probes", "array of tables", "", "", {}, Applies::any, "", "Time series."},
+    {"", "runtime", "table", "", "", {}, Applies::any, "", "Performance settings (no effect on results)."},
+    {"", "neighbours", "table", "", "", {}, Applies::projection, "", "Neighbour selection per operator."},
+    {"", "checkpoint", "table", "", "", {}, Applies::any, "", "When to save the state."},
+    {"", "limits", "table", "", "", {}, Applies::any, "", "Blow-up detection."},
+    {"", "projection", "table", "", "", {}, Applies::projection, "", "Pressure solve of the projection scheme."},
+    {"neighbours", "gradient", "table", "", "", {}, Applies::projection, "", "Neighbours of the WMLS gradient."},
+    {"neighbours", "laplacian", "table", "", "", {}, Applies::projection, "", "Neighbours of the WMLS Laplacian."},
+    {"neighbours", "free_surface", "table", "", "", {}, Applies::projection, "", "Neighbours of free-surface detection."},
     // Their keys.
-    {"case", "name", "string", "", "file name without extension", "at most 200 bytes; no /, \\, control characters, . or ..", Applies::any, "",
+    {"case", "name", "string", "", "file name without extension", words("at most 200 bytes; no /, \\, control characters, . or .."), Applies::any, "",
      "Case name; the default results folder is results/<name>."},
-    {"case", "description", "string", "", "\"\"", "", Applies::any, "",
+    {"case", "description", "string", "", "\"\"", {}, Applies::any, "",
      "Free text, copied to summary.json."},
-    {"case", "dimension", "integer", "", "required", "2, 3", Applies::any, "",
+    {"case", "dimension", "integer", "", "required", closed(2, 3), Applies::any, "",
      "2 or 3."},
-    {"domain", "lo", "vector", "m", "required", "each component in [-1e6, 1e6]", Applies::any, "",
+    {"domain", "lo", "vector", "m", "required", closed(-1e6, 1e6).implausible_beyond(), Applies::any, "",
      "Lower corner."},
-    {"domain", "hi", "vector", "m", "required", "each component in [-1e6, 1e6]; above lo", Applies::any, "",
+    {"domain", "hi", "vector", "m", "required", closed(-1e6, 1e6).implausible_beyond().and_words("above lo"), Applies::any, "",
      "Upper corner; above lo on every axis."},
-    {"domain", "periodic", "array of dimension booleans", "", "all false", "", Applies::any, "",
+    {"domain", "periodic", "array of dimension booleans", "", "all false", {}, Applies::any, "",
      "Axes that wrap around ([true, false]: periodic in x)."},
-    {"fluid", "rho0", "number", "kg/m³", "required", "(0, 1e6]", Applies::any, "",
+    {"fluid", "rho0", "number", "kg/m³", "required", open_closed(0, 1e6).implausible_beyond(), Applies::any, "",
      "Reference density; > 0."},
-    {"fluid", "viscosity", "number", "Pa·s", "required", "[0, 1e6]", Applies::any, "",
+    {"fluid", "viscosity", "number", "Pa·s", "required", closed(0, 1e6).implausible_beyond(), Applies::any, "",
      "Dynamic viscosity μ; ≥ 0 (0 = inviscid)."},
-    {"fluid", "sound_speed", "number", "m/s", "required", "(0, 1e6]", Applies::any, "",
+    {"fluid", "sound_speed", "number", "m/s", "required", open_closed(0, 1e6).implausible_beyond(), Applies::any, "",
      "Artificial speed of sound c₀; > 0."},
-    {"fluid", "gravity", "vector", "m/s²", "[0, -9.81] in 2-D, [0, 0, -9.81] in 3-D", "each component in [-1e6, 1e6]", Applies::any, "",
+    {"fluid", "gravity", "vector", "m/s²", "[0, -9.81] in 2-D, [0, 0, -9.81] in 3-D", closed(-1e6, 1e6).implausible_beyond(), Applies::any, "",
      "Body acceleration (down the last axis by default)."},
-    {"fluid", "eos", "string", "", "\"linear\"", "\"linear\", \"tait\"", Applies::wcsph, "",
+    {"fluid", "eos", "string", "", "\"linear\"", one_of({"linear", "tait"}), Applies::wcsph, "",
      "Equation of state: \"linear\" p = c₀²(ρ − ρ₀) + p_b, or \"tait\" p = ρ₀c₀²/γ ((ρ/ρ₀)^γ − 1) + p_b."},
-    {"fluid", "gamma", "number", "", "7", "(0, 20]", Applies::wcsph, "",
+    {"fluid", "gamma", "number", "", "7", open_closed(0, 20), Applies::wcsph, "",
      "Tait exponent γ; in (0, 20]."},
-    {"fluid", "background_pressure", "number", "Pa", "0", "[0, 1e12]", Applies::any, "",
+    {"fluid", "background_pressure", "number", "Pa", "0", closed(0, 1e12).implausible_beyond(), Applies::any, "",
      "p_b added by the equation of state; ≥ 0."},
-    {"particles", "dx", "number", "m", "required", "[1e-9, inf)", Applies::any, "",
+    {"particles", "dx", "number", "m", "required", at_least(1e-9), Applies::any, "",
      "Lattice spacing of the initial particles; ≥ 10⁻⁹."},
-    {"particles", "jitter", "number", "dx", "0", "[0, 0.1]", Applies::any, "",
+    {"particles", "jitter", "number", "dx", "0", closed(0, 0.1), Applies::any, "",
      "Each fluid particle starts displaced from its lattice site by up to ±jitter·dx/2 along each axis: a fixed pseudo-random offset computed from its id, so every rank, thread count and run starts from the same positions."},
-    {"blocks", "lo", "vector", "m", "required", "", Applies::any, "",
+    {"blocks", "lo", "vector", "m", "required", {}, Applies::any, "",
      "Lower corner."},
-    {"blocks", "hi", "vector", "m", "required", "above lo", Applies::any, "",
+    {"blocks", "hi", "vector", "m", "required", words("above lo"), Applies::any, "",
      "Upper corner; above lo on every axis."},
-    {"blocks", "shape", "string", "", "\"box\"", "\"box\", \"ellipse\"", Applies::any, "",
+    {"blocks", "shape", "string", "", "\"box\"", one_of({"box", "ellipse"}), Applies::any, "",
      "\"box\" (every lattice site of the box) or \"ellipse\": only the sites whose centres lie inside the ellipse inscribed in the box (an ellipsoid in 3-D; a circle or ball when the box is a square or cube)."},
-    {"blocks", "velocity", "vector", "m/s", "zeros", "each component in [-1e5, 1e5]", Applies::any, "",
+    {"blocks", "velocity", "vector", "m/s", "zeros", closed(-1e5, 1e5).implausible_beyond(), Applies::any, "",
      "Initial velocity (uniform profile; added to any other profile)."},
-    {"blocks", "profile", "string", "", "\"uniform\"", "\"uniform\", \"taylor_green\", \"rotating\", \"strain\"", Applies::any, "",
+    {"blocks", "profile", "string", "", "\"uniform\"", one_of({"uniform", "taylor_green", "rotating", "strain"}), Applies::any, "",
      "Initial velocity field and its pressure: \"uniform\", \"taylor_green\" (Taylor–Green vortex of speed amplitude over the block), \"rotating\" or \"strain\" (below)."},
-    {"blocks", "amplitude", "number", "m/s", "0", "[-1e5, 1e5]", Applies::any, "",
+    {"blocks", "amplitude", "number", "m/s", "0", closed(-1e5, 1e5).implausible_beyond(), Applies::any, "",
      "Velocity scale of the taylor_green profile."},
-    {"blocks", "angular_velocity", "number", "rad/s", "required with rotating (not allowed otherwise)", "", Applies::any, "profile = \"rotating\"",
+    {"blocks", "angular_velocity", "number", "rad/s", "required with rotating (not allowed otherwise)", {}, Applies::any, "profile = \"rotating\"",
      "ω of the rotating profile, counter-clockwise positive."},
-    {"blocks", "strain_rate", "number", "1/s", "required with strain (not allowed otherwise)", "", Applies::any, "profile = \"strain\"",
+    {"blocks", "strain_rate", "number", "1/s", "required with strain (not allowed otherwise)", {}, Applies::any, "profile = \"strain\"",
      "A₀ of the strain profile."},
-    {"blocks", "hydrostatic", "boolean", "", "true", "", Applies::any, "",
+    {"blocks", "hydrostatic", "boolean", "", "true", {}, Applies::any, "",
      "Start with the hydrostatic pressure ρ₀·|g|·(depth below the block's top) and the matching density from the EOS, instead of p = p_b."},
-    {"numerics", "scheme", "string", "", "\"wcsph\"", "\"wcsph\", \"projection\"", Applies::any, "",
+    {"numerics", "scheme", "string", "", "\"wcsph\"", one_of({"wcsph", "projection"}), Applies::any, "",
      "\"wcsph\" (weakly compressible SPH: EOS pressure, explicit) or \"projection\" (incompressible projection of seed 004: WMLS operators, implicit pressure Poisson equation; settings in [projection], algorithm in docs/PROJECTION.md)."},
-    {"numerics", "kernel", "string", "", "\"quintic\"", "\"quintic\", \"wendland_c2\", \"cubic_spline\"", Applies::any, "",
+    {"numerics", "kernel", "string", "", "\"quintic\"", one_of({"quintic", "wendland_c2", "cubic_spline"}), Applies::any, "",
      "Smoothing kernel: \"quintic\" (support 3h), \"wendland_c2\" (2h), \"cubic_spline\" (2h)."},
-    {"numerics", "h_over_dx", "number", "", "1.0", "[0.5, 4]", Applies::any, "",
+    {"numerics", "h_over_dx", "number", "", "1.0", closed(0.5, 4), Applies::any, "",
      "Smoothing length h = h_over_dx·dx; in [0.5, 4]."},
-    {"numerics", "density", "string", "", "\"continuity\"", "\"continuity\", \"summation\"", Applies::wcsph, "",
+    {"numerics", "density", "string", "", "\"continuity\"", one_of({"continuity", "summation"}), Applies::wcsph, "",
      "\"continuity\" (density integrated in time) or \"summation\" (density from a kernel sum)."},
-    {"numerics", "delta_sph", "number", "", "0.1", "[0, 1]", Applies::wcsph, "",
+    {"numerics", "delta_sph", "number", "", "0.1", closed(0, 1), Applies::wcsph, "",
      "δ-SPH density diffusion coefficient; in [0, 1], 0 = off."},
-    {"numerics", "density_diffusion", "string", "", "\"antuono\"", "\"antuono\", \"fourtakas\"", Applies::wcsph, "",
+    {"numerics", "density_diffusion", "string", "", "\"antuono\"", one_of({"antuono", "fourtakas"}), Applies::wcsph, "",
      "Form of the δ-SPH term: \"antuono\" (Antuono et al."},
-    {"numerics", "artificial_viscosity", "number", "", "0", "[0, 10]", Applies::wcsph, "",
+    {"numerics", "artificial_viscosity", "number", "", "0", closed(0, 10), Applies::wcsph, "",
      "Monaghan α; in [0, 10], 0 = off."},
-    {"numerics", "wall_artificial_viscosity", "boolean", "", "false", "", Applies::wcsph, "walls.model = \"dummy\"",
+    {"numerics", "wall_artificial_viscosity", "boolean", "", "false", {}, Applies::wcsph, "walls.model = \"dummy\"",
      "Let the artificial viscosity act across fluid–wall pairs too (with the wall particles' boundary velocity: the no-slip mirror or, free-slip, the fluid's)."},
-    {"numerics", "dissipation", "string", "", "\"artificial\"", "\"artificial\", \"riemann\"", Applies::wcsph, "",
+    {"numerics", "dissipation", "string", "", "\"artificial\"", one_of({"artificial", "riemann"}), Applies::wcsph, "",
      "WCSPH only."},
-    {"numerics", "shifting", "number", "", "0", "[0, 20]", Applies::wcsph, "",
+    {"numerics", "shifting", "number", "", "0", closed(0, 20), Applies::wcsph, "",
      "Particle-shifting coefficient A (0 = off); displacement per step −A·U·h·dt·Σ(1 + 0.2(W/W(dx))⁴)∇W V with U the largest fluid speed (Sun et al."},
-    {"numerics", "cfl", "number", "", "0.25", "(0, 1]", Applies::any, "",
+    {"numerics", "cfl", "number", "", "0.25", open_closed(0, 1), Applies::any, "",
      "Acoustic limit dt ≤ cfl·h/(c₀ + |v|max); in (0, 1]."},
-    {"numerics", "viscous_cfl", "number", "", "0.125", "(0, 1]", Applies::any, "",
+    {"numerics", "viscous_cfl", "number", "", "0.125", open_closed(0, 1), Applies::any, "",
      "Viscous limit dt ≤ viscous_cfl·h²/ν; in (0, 1]."},
-    {"numerics", "force_cfl", "number", "", "0.25", "(0, 1]", Applies::any, "",
+    {"numerics", "force_cfl", "number", "", "0.25", open_closed(0, 1), Applies::any, "",
      "Force limit dt ≤ force_cfl·√(h/|a|max); in (0, 1]."},
-    {"numerics", "dt", "number", "s", "adaptive", "(0, inf); at most the stability limit", Applies::any, "",
+    {"numerics", "dt", "number", "s", "adaptive", above(0).and_words("at most the stability limit"), Applies::any, "",
      "Fixed time step; > 0."},
-    {"numerics", "neighbour_skin", "number", "dx", "0.5", "[0, 2]", Applies::wcsph, "",
+    {"numerics", "neighbour_skin", "number", "dx", "0.5", closed(0, 2), Applies::wcsph, "",
      "Verlet skin: neighbour lists hold every pair within support + skin and are rebuilt, together with the particle sort, migration between ranks and regrouping, only when some particle has moved more than skin/2 since the last rebuild (or after a checkpoint)."},
-    {"projection", "solver", "string", "", "\"bicgstab\"", "\"bicgstab\", \"sor\"", Applies::projection, "",
+    {"projection", "solver", "string", "", "\"bicgstab\"", one_of({"bicgstab", "sor"}), Applies::projection, "",
      "\"bicgstab\" (BiCGSTAB with Jacobi preconditioning; the WMLS Laplacian is not symmetric) or \"sor\" (the seed's successive over-relaxation; Gauss–Seidel inside a cell group, Jacobi across groups and ranks)."},
-    {"projection", "tolerance", "number", "", "1e-8", "(0, 1)", Applies::projection, "",
+    {"projection", "tolerance", "number", "", "1e-8", open(0, 1), Applies::projection, "",
      "Stop when ‖b̂ − Âp‖₂ ≤ tolerance·‖b̂‖₂ for the row-scaled system (units of pressure; docs/PROJECTION.md, P4); in (0, 1)."},
-    {"projection", "max_iterations", "integer", "", "1000", "[1, 1000000]", Applies::projection, "",
+    {"projection", "max_iterations", "integer", "", "1000", closed(1, 1000000), Applies::projection, "",
      "BiCGSTAB iterations (two operator products each) or SOR sweeps per step; a solve that has not converged by then stops the run with exit code 3 and a message naming the solver, the residual and these keys."},
-    {"projection", "preconditioner", "string", "", "\"jacobi\"", "\"jacobi\", \"block_ilu0\", \"block_lu\"", Applies::projection, "projection.solver = \"bicgstab\"",
+    {"projection", "preconditioner", "string", "", "\"jacobi\"", one_of({"jacobi", "block_ilu0", "block_lu"}), Applies::projection, "projection.solver = \"bicgstab\"",
      "Preconditioner of BiCGSTAB: \"jacobi\" (the row scaling alone), \"block_ilu0\" (block-Jacobi: ILU(0) of each cell group's diagonal block, couplings to other groups and ranks dropped) or \"block_lu\" (the same blocks, exact sparse LU); docs/PROJECTION.md, \"Preconditioner\"; only with solver = \"bicgstab\"."},
-    {"projection", "relaxation", "number", "", "1.5", "(0, 2)", Applies::projection, "projection.solver = \"sor\"",
+    {"projection", "relaxation", "number", "", "1.5", open(0, 2), Applies::projection, "projection.solver = \"sor\"",
      "SOR relaxation factor (seed 004: 1.5); in (0, 2); only with solver = \"sor\"."},
-    {"projection", "gamma", "number", "", "0.01", "[0, 1]", Applies::projection, "",
+    {"projection", "gamma", "number", "", "0.01", closed(0, 1), Applies::projection, "",
      "Relaxation γ of the density-deviation part of the source term (seed 004: γ ≤ 1); in [0, 1]."},
-    {"projection", "surface_diameter_over_dx", "number", "", "2.1", "[1, 4]", Applies::projection, "",
+    {"projection", "surface_diameter_over_dx", "number", "", "2.1", closed(1, 4), Applies::projection, "",
      "Circle diameter of Dilts' arc free-surface test in lattice spacings (seed 004: 2.1); in [1, 4]."},
-    {"projection", "surface_density_ratio", "number", "", "0", "[0, 1)", Applies::projection, "",
+    {"projection", "surface_density_ratio", "number", "", "0", closed_open(0, 1), Applies::projection, "",
      "β of the number-density surface criterion (MPS, Koshizuka & Oka 1996): a particle with n_i < β n0 is also a free-surface particle (p = 0), besides the arc test; 0 = off; in [0, 1)."},
-    {"projection", "correction_gradient", "string", "", "\"second_order\"", "\"second_order\", \"first_order\"", Applies::projection, "",
+    {"projection", "correction_gradient", "string", "", "\"second_order\"", one_of({"second_order", "first_order"}), Applies::projection, "",
      "Gradient of the velocity correction P7: \"second_order\" (the WMLS fit of the PPE, seed 004) or \"first_order\" (the linear WMLS fit, exact for linear fields; docs/WMLS.md W18)."},
-    {"projection", "fluid_collision", "boolean", "", "true", "", Applies::projection, "",
+    {"projection", "fluid_collision", "boolean", "", "true", {}, Applies::projection, "",
      "Koshizuka-type collision of fluid pairs closer than 0.8 dx that approach (restitution 0.2, momentum-conserving; docs/PROJECTION.md, \"Collisions\")."},
-    {"walls", "model", "string", "", "\"none\"", "\"none\", \"reflective\", \"dummy\"", Applies::any, "",
+    {"walls", "model", "string", "", "\"none\"", one_of({"none", "reflective", "dummy"}), Applies::any, "",
      "\"none\", \"reflective\" (particles bounce off the tank faces) or \"dummy\" (layers of wall particles, Adami et al."},
-    {"walls", "tank_lo", "vector", "m", "required unless model = \"none\"", "inside the domain", Applies::any, "walls.model = \"reflective\" | \"dummy\"",
+    {"walls", "tank_lo", "vector", "m", "required unless model = \"none\"", words("inside the domain"), Applies::any, "walls.model = \"reflective\" | \"dummy\"",
      "Lower corner of the tank; inside the domain."},
-    {"walls", "tank_hi", "vector", "m", "required unless model = \"none\"", "above tank_lo, inside the domain", Applies::any, "walls.model = \"reflective\" | \"dummy\"",
+    {"walls", "tank_hi", "vector", "m", "required unless model = \"none\"", words("above tank_lo, inside the domain"), Applies::any, "walls.model = \"reflective\" | \"dummy\"",
      "Upper corner of the tank; above tank_lo, inside the domain."},
-    {"walls", "tank_faces", "array of strings", "", "all faces: [\"x-\", \"x+\", \"y-\", \"y+\"] (2-D) plus \"z-\", \"z+\" (3-D)", "\"x-\", \"x+\", \"y-\", \"y+\", \"z-\", \"z+\"", Applies::any, "walls.model = \"reflective\" | \"dummy\"",
+    {"walls", "tank_faces", "array of strings", "", "all faces: [\"x-\", \"x+\", \"y-\", \"y+\"] (2-D) plus \"z-\", \"z+\" (3-D)", one_of({"x-", "x+", "y-", "y+", "z-", "z+"}), Applies::any, "walls.model = \"reflective\" | \"dummy\"",
      "Faces of the tank that carry a wall; - is the low side."},
-    {"walls", "restitution", "number", "", "1.0", "[0, 1]", Applies::any, "",
+    {"walls", "restitution", "number", "", "1.0", closed(0, 1), Applies::any, "",
      "Reflective walls and planes: fraction of the normal velocity kept after a bounce; in [0, 1]."},
-    {"walls", "no_slip", "boolean", "", "true", "", Applies::wcsph, "walls.model = \"dummy\"",
+    {"walls", "no_slip", "boolean", "", "true", {}, Applies::wcsph, "walls.model = \"dummy\"",
      "Dummy walls: no-slip (true) or free-slip (false)."},
-    {"walls", "planes", "array of tables", "", "", "", Applies::any, "", "Extra reflective planes."},
-    {"walls", "boxes", "array of tables", "", "", "", Applies::any, "walls.model = \"dummy\"", "Solid obstacles of dummy wall particles."},
-    {"walls.planes", "point", "vector", "m", "required", "each component in [-1e6, 1e6]", Applies::any, "",
+    {"walls", "planes", "array of tables", "", "", {}, Applies::any, "", "Extra reflective planes."},
+    {"walls", "boxes", "array of tables", "", "", {}, Applies::any, "walls.model = \"dummy\"", "Solid obstacles of dummy wall particles."},
+    {"walls.planes", "point", "vector", "m", "required", closed(-1e6, 1e6).implausible_beyond(), Applies::any, "",
      "A point on the plane."},
-    {"walls.planes", "normal", "vector", "", "required", "not the zero vector", Applies::any, "",
+    {"walls.planes", "normal", "vector", "", "required", words("not the zero vector"), Applies::any, "",
      "Direction pointing to the fluid side; not zero."},
-    {"walls.boxes", "lo", "vector", "m", "required", "", Applies::any, "",
+    {"walls.boxes", "lo", "vector", "m", "required", {}, Applies::any, "",
      "Lower corner."},
-    {"walls.boxes", "hi", "vector", "m", "required", "above lo", Applies::any, "",
+    {"walls.boxes", "hi", "vector", "m", "required", words("above lo"), Applies::any, "",
      "Upper corner; above lo on every axis."},
-    {"time", "end_time", "number", "s", "required", "(0, inf)", Applies::any, "",
+    {"time", "end_time", "number", "s", "required", above(0), Applies::any, "",
      "Simulated time to reach; > 0."},
-    {"time", "output_interval", "number", "s", "0", "[0, inf)", Applies::any, "",
+    {"time", "output_interval", "number", "s", "0", at_least(0), Applies::any, "",
      "Interval between snapshots (and default probe interval); ≥ 0."},
-    {"output", "snapshots", "boolean", "", "true", "", Applies::any, "",
+    {"output", "snapshots", "boolean", "", "true", {}, Applies::any, "",
      "Write particle snapshots."},
-    {"output", "fields", "array of strings", "", "[\"position\", \"velocity\", \"density\", \"pressure\", \"id\", \"kind\"]", "\"position\", \"velocity\", \"density\", \"pressure\", \"acceleration\", \"mass\", \"id\", \"kind\"", Applies::any, "",
+    {"output", "fields", "array of strings", "", "[\"position\", \"velocity\", \"density\", \"pressure\", \"id\", \"kind\"]", one_of({"position", "velocity", "density", "pressure", "acceleration", "mass", "id", "kind"}), Applies::any, "",
      "Fields in each snapshot, from position, velocity, density, pressure, acceleration, mass, id, kind; no duplicates."},
-    {"probes", "name", "string", "", "required", "letters, digits, _ and -; at most 200 bytes; unique", Applies::any, "",
+    {"probes", "name", "string", "", "required", words("letters, digits, _ and -; at most 200 bytes; unique"), Applies::any, "",
      "File name stem: letters, digits, _ and - only; unique; at most 200 bytes."},
-    {"probes", "type", "string", "", "required", "\"pressure\", \"water_level\", \"surge_front\", \"force\"", Applies::any, "",
+    {"probes", "type", "string", "", "required", one_of({"pressure", "water_level", "surge_front", "force"}), Applies::any, "",
      "\"pressure\", \"water_level\", \"surge_front\" or \"force\"."},
-    {"probes", "position", "vector", "m", "required for pressure (not allowed otherwise)", "", Applies::any, "type = \"pressure\"",
+    {"probes", "position", "vector", "m", "required for pressure (not allowed otherwise)", {}, Applies::any, "type = \"pressure\"",
      "Sampling point, inside the domain; for an area sensor its centre, on a wall surface (within dx)."},
-    {"probes", "x", "number", "m", "required for water_level (not allowed otherwise)", "", Applies::any, "type = \"water_level\"",
+    {"probes", "x", "number", "m", "required for water_level (not allowed otherwise)", {}, Applies::any, "type = \"water_level\"",
      "Horizontal position of the gauge, inside the tank (the domain without walls)."},
-    {"probes", "y", "number", "m", "whole width", "", Applies::any, "type = \"water_level\"",
+    {"probes", "y", "number", "m", "whole width", {}, Applies::any, "type = \"water_level\"",
      "water_level in 3-D only: a point gauge at (x, y)."},
-    {"probes", "interval", "number or \"every_step\"", "s", "0", "[0, inf) or \"every_step\"", Applies::any, "",
+    {"probes", "interval", "number or \"every_step\"", "s", "0", at_least(0).and_words("or the string \"every_step\""), Applies::any, "",
      "Sampling interval; ≥ 0."},
-    {"probes", "diameter", "number", "m", "point probe", "(0, 1e6]", Applies::any, "type = \"pressure\"",
+    {"probes", "diameter", "number", "m", "point probe", open_closed(0, 1e6).implausible_beyond(), Applies::any, "type = \"pressure\"",
      "pressure only: an area sensor (flush-mounted transducer) of this diameter; > 0."},
-    {"probes", "reading", "string", "", "\"force\"", "\"force\", \"interpolated\"", Applies::any, "type = \"pressure\", with a diameter",
+    {"probes", "reading", "string", "", "\"force\"", one_of({"force", "interpolated"}), Applies::any, "type = \"pressure\", with a diameter",
      "area sensor only: \"force\", the fluid's normal force on the wall under the face per unit area; \"interpolated\", the pressure interpolated on the face (the default, and the only reading, under the projection scheme)."},
-    {"probes", "face", "string", "", "–", "\"x-\", \"x+\", \"y-\", \"y+\", \"z-\", \"z+\"", Applies::any, "type = \"force\" | \"pressure\"",
+    {"probes", "face", "string", "", "–", one_of({"x-", "x+", "y-", "y+", "z-", "z+"}), Applies::any, "type = \"force\" | \"pressure\"",
      "force: the tank face loaded (\"x-\", \"x+\", …; must be in walls.tank_faces)."},
-    {"probes", "box", "integer", "", "–", "a walls.boxes index", Applies::any, "type = \"force\" | \"pressure\"",
+    {"probes", "box", "integer", "", "–", words("a walls.boxes index"), Applies::any, "type = \"force\" | \"pressure\"",
      "force: the [[walls.boxes]] index loaded (0 = first)."},
-    {"probes", "lo", "vector", "m", "the whole face or box", "", Applies::any, "type = \"force\"",
+    {"probes", "lo", "vector", "m", "the whole face or box", {}, Applies::any, "type = \"force\"",
      "force only: limits the region to the wall particles inside [lo, hi] (a part of a face: a panel)."},
-    {"probes", "hi", "vector", "m", "the whole face or box", "", Applies::any, "type = \"force\"",
+    {"probes", "hi", "vector", "m", "the whole face or box", {}, Applies::any, "type = \"force\"",
      "force only: limits the region to the wall particles inside [lo, hi] (a part of a face: a panel)."},
-    {"probes", "moment_about", "vector", "m", "no moment", "", Applies::any, "type = \"force\"",
+    {"probes", "moment_about", "vector", "m", "no moment", closed(-1e6, 1e6).implausible_beyond(), Applies::any, "type = \"force\"",
      "force only: also write the moment about this point."},
-    {"probes", "direction", "string", "", "\"+x\"", "\"+x\", \"-x\", \"+y\", \"-y\", \"+z\", \"-z\"", Applies::any, "type = \"surge_front\"",
+    {"probes", "direction", "string", "", "\"+x\"", one_of({"+x", "-x", "+y", "-y", "+z", "-z"}), Applies::any, "type = \"surge_front\"",
      "surge_front only: \"+x\", \"-x\", \"+y\", \"-y\" (3-D also \"+z\", \"-z\")."},
-    {"probes", "min_thickness", "number", "m", "2·dx", "(0, 1e6]", Applies::any, "type = \"surge_front\"",
+    {"probes", "min_thickness", "number", "m", "2·dx", open_closed(0, 1e6).implausible_beyond(), Applies::any, "type = \"surge_front\"",
      "surge_front only: the fluid depth a column needs to count as the front; > 0."},
-    {"neighbours.<operator>", "selection", "string", "", "\"radius\"", "\"radius\", \"convex-hull\"", Applies::projection, "",
+    {"neighbours.<operator>", "selection", "string", "", "\"radius\"", one_of({"radius", "convex-hull"}), Applies::projection, "",
      "\"radius\": every particle within the operator's support."},
-    {"neighbours.<operator>", "candidate_radius_over_dx", "number", "dx", "3.1", "(0, 10]", Applies::projection, "selection = \"convex-hull\"",
+    {"neighbours.<operator>", "candidate_radius_over_dx", "number", "dx", "3.1", open_closed(0, 10), Applies::projection, "selection = \"convex-hull\"",
      "convex-hull only: candidates are the particles within this many lattice spacings; in (0, 10]."},
-    {"neighbours.<operator>", "union_with_radius", "boolean", "", "false", "", Applies::projection, "selection = \"convex-hull\"",
+    {"neighbours.<operator>", "union_with_radius", "boolean", "", "false", {}, Applies::projection, "selection = \"convex-hull\"",
      "convex-hull only: add every particle within the support to the hull neighbours. The candidates are the particles within the operator radius, so true would give the radius set: refused (use selection = \"radius\")."},
-    {"neighbours.<operator>", "hull_points", "string", "", "\"boundary\"", "\"vertices\", \"boundary\"", Applies::projection, "selection = \"convex-hull\"",
+    {"neighbours.<operator>", "hull_points", "string", "", "\"boundary\"", one_of({"vertices", "boundary"}), Applies::projection, "selection = \"convex-hull\"",
      "convex-hull only: \"vertices\" keeps the hull corners; \"boundary\" also the images lying on a hull edge (3-D: facet), within 10⁻⁹ of the hull's size — e.g."},
-    {"runtime", "particles_per_group", "integer", "particles", "2000", "[1, 2147483647]", Applies::any, "",
+    {"runtime", "particles_per_group", "integer", "particles", "2000", closed(1, 2147483647), Applies::any, "",
      "Target size of the cell groups the task scheduler works on; ≥ 1."},
-    {"runtime", "rebalance_threshold", "number", "fraction", "0.10", "(0, 10]", Applies::any, "",
+    {"runtime", "rebalance_threshold", "number", "fraction", "0.10", open_closed(0, 10), Applies::any, "",
      "On several ranks, move the cut points when the slowest rank's busy time exceeds the mean by more than this over a window; in (0, 10]."},
-    {"runtime", "rebalance_window", "integer", "steps", "10", "[1, 1000000]", Applies::any, "",
+    {"runtime", "rebalance_window", "integer", "steps", "10", closed(1, 1000000), Applies::any, "",
      "Steps over which busy time is summed before the imbalance is judged; ≥ 1."},
-    {"runtime", "rebalance_every", "integer", "steps", "0", "[0, 1000000000]", Applies::any, "",
+    {"runtime", "rebalance_every", "integer", "steps", "0", closed(0, 1000000000), Applies::any, "",
      "Also rebalance every this many steps whatever the imbalance (0: only when unbalanced)."},
-    {"runtime", "balance_cost", "string", "", "\"time\"", "\"time\", \"particles\"", Applies::any, "",
+    {"runtime", "balance_cost", "string", "", "\"time\"", one_of({"time", "particles"}), Applies::any, "",
      "What the balancer equalises: \"time\" (measured task time per cell group) or \"particles\"."},
-    {"runtime", "initial_decomposition", "string", "", "\"balanced\"", "\"balanced\", \"key-range\"", Applies::any, "",
+    {"runtime", "initial_decomposition", "string", "", "\"balanced\"", one_of({"balanced", "key-range"}), Applies::any, "",
      "How ranks split the curve at start: \"balanced\" (equal particle counts) or \"key-range\" (equal key ranges; naive and usually unbalanced, for testing the balancer)."},
-    {"checkpoint", "every_steps", "integer", "steps", "0", "[0, 1000000000]", Applies::any, "",
+    {"checkpoint", "every_steps", "integer", "steps", "0", closed(0, 1000000000), Applies::any, "",
      "Write <results>/checkpoint.h5 after every this many steps (counted from the start of the run); 0 = off."},
-    {"checkpoint", "every_minutes", "number", "minutes", "30", "[0, 1e6]", Applies::any, "",
+    {"checkpoint", "every_minutes", "number", "minutes", "30", closed(0, 1e6), Applies::any, "",
      "Also write one when this much wall time has passed since the last (rank 0's clock decides; all ranks write at the same step); 0 = off."},
-    {"limits", "max_speed", "number", "m/s", "fluid.sound_speed", "(0, inf)", Applies::any, "",
+    {"limits", "max_speed", "number", "m/s", "fluid.sound_speed", above(0), Applies::any, "",
      "Largest speed a fluid particle may reach; > 0."},
-    {"limits", "min_density", "number", "kg/m^3", "0.01  rho0", "[0, fluid.rho0)", Applies::wcsph, "",
+    {"limits", "min_density", "number", "kg/m^3", "0.01  rho0", at_least(0).and_words("below fluid.rho0"), Applies::wcsph, "",
      "Smallest density; ≥ 0 and below rho0."},
-    {"limits", "max_density", "number", "kg/m^3", "2  rho0", "(fluid.rho0, inf)", Applies::wcsph, "",
+    {"limits", "max_density", "number", "kg/m^3", "2  rho0", words("above fluid.rho0"), Applies::wcsph, "",
      "Largest density; above rho0."},
 };
 // clang-format on
@@ -246,7 +293,97 @@ std::string joined(std::string_view table, std::string_view key) {
     return table.empty() ? std::string(key) : std::string(table) + "." + std::string(key);
 }
 
+bool is_integer(const KeySpec& k) {
+    return k.type == "integer";
+}
+
+// An end of an interval as the docs write it: "0.5", "1e6", "1e-9", "inf"; integers in full.
+std::string bound_text(double v, bool integer) {
+    if (std::isinf(v))
+        return v > 0 ? "inf" : "-inf";
+    if (integer || (v == std::floor(v) && std::abs(v) < 1e5))
+        return fmt::format("{:.0f}", v);
+    // The shortest %g form that reads back as v, with the exponent written "1e6", "1e-9".
+    std::string out;
+    for (int digits = 1; digits <= 17; ++digits) {
+        out = fmt::format("{:.{}g}", v, digits);
+        if (std::stod(out) == v)
+            break;
+    }
+    const auto e = out.find('e');
+    if (e == std::string::npos)
+        return out;
+    std::string exponent = out.substr(e + 1);
+    const bool negative = exponent[0] == '-';
+    exponent.erase(0, exponent.find_first_not_of("+-0"));
+    return out.substr(0, e + 1) + (negative ? "-" : "") + exponent;
+}
+
+std::string interval_text(const KeySpec& k) {
+    const Range& r = k.range;
+    return fmt::format("{}{}, {}{}", r.lo_open ? '(' : '[', bound_text(r.lo, is_integer(k)),
+                       bound_text(r.hi, is_integer(k)), r.hi_open ? ')' : ']');
+}
+
+// The key's unit as a message writes it after a value: " m/s", or "".
+std::string unit_suffix(const KeySpec& k) {
+    return k.unit.empty() ? std::string() : fmt::format(" {}", k.unit);
+}
+
 } // namespace
+
+const KeySpec* find_key(std::string_view table, std::string_view key) {
+    static const auto index = [] {
+        std::map<std::pair<std::string_view, std::string_view>, const KeySpec*> m;
+        for (const auto& k : case_keys())
+            m.emplace(std::pair(k.table, k.key), &k);
+        return m;
+    }();
+    const auto it = index.find(std::pair(table, key));
+    return it == index.end() ? nullptr : it->second;
+}
+
+std::string range_text(const KeySpec& k) {
+    const Range& r = k.range;
+    std::string out;
+    if (!r.choices.empty()) {
+        out = choices_text(k);
+    } else if (r.bounded()) {
+        out = k.type == "vector" ? "each component in " + interval_text(k) : interval_text(k);
+    }
+    if (!r.words.empty())
+        out += (out.empty() ? "" : "; ") + std::string(r.words);
+    return out;
+}
+
+std::string range_violation(const KeySpec& k, double v) {
+    const Range& r = k.range;
+    const bool low = r.lo_open ? !(v > r.lo) : !(v >= r.lo);
+    const bool high = r.hi_open ? !(v < r.hi) : !(v <= r.hi);
+    if (!low && !high)
+        return {};
+    // A plausibility limit names the unit: a value beyond it is usually in the wrong one.
+    if (r.plausibility && (high || r.lo == -r.hi))
+        return fmt::format("{}{} is implausibly large (the limit is {}{}); check the units", v,
+                           unit_suffix(k), bound_text(r.hi, is_integer(k)), unit_suffix(k));
+    const bool one_sided = r.plausibility || std::isinf(low ? r.hi : r.lo);
+    if (one_sided && low)
+        return fmt::format("must be {} {}{}, got {}",
+                           r.lo_open ? ">" : ">=", bound_text(r.lo, is_integer(k)), unit_suffix(k),
+                           v);
+    if (one_sided)
+        return fmt::format("must be {} {}{}, got {}",
+                           r.hi_open ? "<" : "<=", bound_text(r.hi, is_integer(k)), unit_suffix(k),
+                           v);
+    return fmt::format("must be in {}{}, got {}", interval_text(k), unit_suffix(k), v);
+}
+
+std::string choices_text(const KeySpec& k) {
+    std::string out;
+    for (const auto c : k.range.choices)
+        out += (out.empty() ? "\"" : ", \"") + std::string(c) + "\"";
+    return out;
+}
 
 const std::vector<KeySpec>& case_keys() {
     static const std::vector<KeySpec> keys = expand();
@@ -284,17 +421,26 @@ const char* scheme_name(Scheme s) {
 }
 
 std::string schema_json() {
+    const auto finite_or_null = [](double v) {
+        return std::isinf(v) ? nlohmann::ordered_json() : nlohmann::ordered_json(v);
+    };
     nlohmann::ordered_json out = nlohmann::ordered_json::array();
     for (const auto& k : case_keys())
-        out.push_back({{"table", k.table},
-                       {"key", k.key},
-                       {"type", k.type},
-                       {"unit", k.unit},
-                       {"default", k.default_text},
-                       {"range", k.range},
-                       {"applies", applies_name(k.applies)},
-                       {"when", k.when},
-                       {"doc", k.doc}});
+        out.push_back(
+            {{"table", k.table},
+             {"key", k.key},
+             {"type", k.type},
+             {"unit", k.unit},
+             {"default", k.default_text},
+             {"range", range_text(k)},
+             {"min", finite_or_null(k.range.lo)},
+             {"max", finite_or_null(k.range.hi)},
+             {"min_open", k.range.lo_open},
+             {"max_open", k.range.hi_open},
+             {"choices", std::vector<std::string>(k.range.choices.begin(), k.range.choices.end())},
+             {"applies", applies_name(k.applies)},
+             {"when", k.when},
+             {"doc", k.doc}});
     return out.dump(1) + "\n";
 }
 
