@@ -1,6 +1,6 @@
 #pragma once
-// Limits and tolerances shared by the readers of a case file's sections (case_reader.cpp,
-// case_probes.cpp).
+// Limits and tolerances shared by the readers of a case file's sections (case_fluid.cpp,
+// case_walls.cpp, case_probes.cpp, case_run_control.cpp, case_size.cpp).
 #include "sluice/io/case_config.hpp"
 
 #include <algorithm>

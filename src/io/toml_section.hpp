@@ -1,6 +1,7 @@
 #pragma once
 // Typed, schema-checked look-ups in a parsed case file, and the wording of every message about
-// a key (private to src/io). case_reader.cpp reads the case's sections with these.
+// a key (private to src/io). The readers of the case's sections (case_fluid.cpp,
+// case_numerics.cpp, case_walls.cpp, case_probes.cpp, case_run_control.cpp) use these.
 #include "sluice/io/case_config.hpp"
 
 #include <fmt/format.h>
