@@ -3,7 +3,7 @@
 // type, unit, default, range and the scheme it applies to. It drives the reader's unknown-key
 // and inapplicable-key refusals, `--set`, and `sluice schema` (its JSON form), from which the
 // bad-input corpus is generated and docs/CASE_REFERENCE.md is checked
-// (tests/cli/case_reference.py).
+// (tests/cli/case_reference.sh).
 #include "sluice/io/case_config.hpp"
 
 #include <functional>
@@ -24,8 +24,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // The values a key accepts, as data: an interval (for a number, an integer, or each component
 // of a vector), or the strings allowed (for a string, or each string of an array of strings),
 // and words for what depends on other keys. The reader enforces the interval and the choices
-// (Section's typed look-ups); the range text of docs/CASE_REFERENCE.md and `sluice schema` is
-// written from them (range_text), so the two cannot drift.
+// (Section's typed look-ups); the `range` text of `sluice schema` is written from them
+// (range_text), and tests/cli/case_reference.sh checks each interval docs/CASE_REFERENCE.md
+// states against them, so the three cannot drift.
 struct Range {
     double lo = -kInf;
     bool lo_open = true;
