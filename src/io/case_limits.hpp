@@ -1,6 +1,6 @@
 #pragma once
-// Limits and tolerances shared by the readers of a case file's sections (case_reader.cpp,
-// case_probes.cpp).
+// Limits and tolerances shared by the readers of a case file's sections (case_fluid.cpp,
+// case_walls.cpp, case_probes.cpp, case_run_control.cpp, case_size.cpp).
 #include "sluice/io/case_config.hpp"
 
 #include <algorithm>
@@ -9,8 +9,7 @@
 namespace sluice::case_file {
 
 constexpr const char* kAxis = "xyz";
-inline constexpr double kMaxCoordinate = 1e6; // [m] domain corners
-inline constexpr double kMaxOutputs = 1e7;    // snapshots or probe samples per run
+inline constexpr double kMaxOutputs = 1e7; // snapshots or probe samples per run
 inline constexpr std::size_t kMaxNameLength = 200;
 
 // Tolerance for "inside" tests, relative to the domain size: lattice edges computed by the

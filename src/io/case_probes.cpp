@@ -86,8 +86,6 @@ void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
     p.lo = s.triple("lo");
     p.hi = s.triple("hi");
     p.moment_about = s.triple("moment_about");
-    if (p.moment_about)
-        s.require_triple_at_most(*p.moment_about, kMaxCoordinate, "moment_about", "m");
     const auto dim = static_cast<std::size_t>(c.dimension);
     const double eps = slack(c);
     // Where the region's wall particles can be: the face's wall layers (one kernel support
@@ -235,11 +233,6 @@ void read_probes(const Section& root, CaseConfig& c) {
                       "the probe lies outside the domain");
             if (s.node("diameter") != nullptr) {
                 p.diameter = s.required_number("diameter", "sensor diameter [m]");
-                s.require(p.diameter > 0, "diameter",
-                          fmt::format("must be > 0 (a sensor's diameter), got {}", p.diameter));
-                s.require(
-                    p.diameter <= kMaxCoordinate, "diameter",
-                    fmt::format("must be at most {:g} m, got {}", kMaxCoordinate, p.diameter));
                 read_sensor_wall(s, c, p);
                 // The force reading sums the WCSPH momentum equation's fluid-wall pair forces;
                 // the projection scheme applies no such forces, so it interpolates.
@@ -293,8 +286,6 @@ void read_probes(const Section& root, CaseConfig& c) {
             p.direction_axis = dir[1] - 'x';
             p.direction_negative = dir[0] == '-';
             p.min_thickness = s.number("min_thickness", 2 * c.dx);
-            s.require(p.min_thickness > 0 && p.min_thickness <= kMaxCoordinate, "min_thickness",
-                      fmt::format("must be > 0 m (default 2 dx), got {}", p.min_thickness));
         }
         if (force)
             read_force_region(s, c, p);
@@ -308,8 +299,6 @@ void read_probes(const Section& root, CaseConfig& c) {
         } else {
             p.interval = s.number("interval", p.interval);
         }
-        s.require(p.interval >= 0, "interval",
-                  fmt::format("must be >= 0 (0 = every output interval), got {}", p.interval));
         s.require(p.interval == 0 || c.end_time / p.interval <= kMaxOutputs, "interval",
                   fmt::format("{} s would take {:.3g} samples up to end_time = {} s; at most {:g}",
                               p.interval, c.end_time / p.interval, c.end_time, kMaxOutputs));

@@ -167,25 +167,33 @@ Triple Reader::as_triple(const toml::node& n, const std::string& key) const {
 // ---------------------------------------------------------------------------------------------
 // Section
 
-void Section::require_at_most(double v, double bound, std::string_view k,
-                              std::string_view unit) const {
-    if (std::abs(v) > bound)
-        fail(k, fmt::format("{} {} is implausibly large (the limit is {:g} {}); check the "
-                            "units",
-                            v, unit, bound, unit));
+Section::Section(const Reader& r, const toml::table& t, std::string path)
+    : r_(r), t_(t), path_(std::move(path)), schema_(schema_of(path_)) {}
+
+void Section::check_range(std::string_view k, double v) const {
+    const KeySpec* spec = find_key(schema_, k);
+    if (spec == nullptr || !spec->range.bounded())
+        return;
+    if (const std::string why = range_violation(*spec, v); !why.empty())
+        fail(k, why);
 }
 
-void Section::require_triple_at_most(const Triple& v, double bound, std::string_view k,
-                                     std::string_view unit) const {
-    for (double x : v)
-        require_at_most(x, bound, k, unit);
+void Section::check_choice(std::string_view k, const std::string& v) const {
+    const KeySpec* spec = find_key(schema_, k);
+    if (spec == nullptr || spec->range.choices.empty())
+        return;
+    const auto& choices = spec->range.choices;
+    if (std::find(choices.begin(), choices.end(), v) == choices.end())
+        fail(k, fmt::format("unknown value \"{}\"; allowed: {}", v, choices_text(*spec)));
 }
 
 std::optional<double> Section::number(std::string_view k) const {
     const auto* n = node(k);
     if (n == nullptr)
         return std::nullopt;
-    return r_.as_number(*n, key(k));
+    const double v = r_.as_number(*n, key(k));
+    check_range(k, v);
+    return v;
 }
 
 double Section::required_number(std::string_view k, std::string_view what) const {
@@ -196,7 +204,10 @@ double Section::required_number(std::string_view k, std::string_view what) const
 }
 
 std::optional<std::int64_t> Section::integer(std::string_view k) const {
-    return typed<std::int64_t>(k, "expected an integer");
+    const auto v = typed<std::int64_t>(k, "expected an integer");
+    if (v)
+        check_range(k, static_cast<double>(*v));
+    return v;
 }
 
 std::optional<bool> Section::boolean(std::string_view k) const {
@@ -204,14 +215,25 @@ std::optional<bool> Section::boolean(std::string_view k) const {
 }
 
 std::optional<std::string> Section::string(std::string_view k) const {
-    return typed<std::string>(k, "expected a string");
+    const KeySpec* spec = find_key(schema_, k);
+    const bool listed = spec != nullptr && !spec->range.choices.empty();
+    if (const auto* n = node(k); listed && n != nullptr && !n->is_string())
+        fail(k, fmt::format("expected a string, got {}; allowed: {}", type_name(*n),
+                            choices_text(*spec)));
+    const auto v = typed<std::string>(k, "expected a string");
+    if (v)
+        check_choice(k, *v);
+    return v;
 }
 
 std::optional<Triple> Section::triple(std::string_view k) const {
     const auto* n = node(k);
     if (n == nullptr)
         return std::nullopt;
-    return r_.as_triple(*n, key(k));
+    const Triple v = r_.as_triple(*n, key(k));
+    for (int a = 0; a < r_.dim; ++a)
+        check_range(k, v[static_cast<std::size_t>(a)]);
+    return v;
 }
 
 Triple Section::required_triple(std::string_view k, std::string_view what) const {
@@ -235,6 +257,7 @@ std::optional<std::vector<std::string>> Section::strings(std::string_view k) con
             r_.fail(fmt::format("{}[{}]", key(k), i),
                     "expected a string, got " + type_name((*arr)[i]), n);
         out.push_back(s->get());
+        check_choice(k, out.back());
     }
     return out;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Typed, schema-checked look-ups in a parsed case file, and the wording of every message about
-// a key (private to src/io). case_reader.cpp reads the case's sections with these.
+// a key (private to src/io). The readers of the case's sections (case_fluid.cpp,
+// case_numerics.cpp, case_walls.cpp, case_probes.cpp, case_run_control.cpp) use these.
 #include "sluice/io/case_config.hpp"
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include <functional>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -55,11 +57,12 @@ private:
 };
 
 // One table of the file with its display path ("blocks[1]"), for concise typed look-ups.
-// Optional getters return nullopt when the key is absent; type errors throw.
+// Optional getters return nullopt when the key is absent; type errors throw, and so does a
+// value outside the key's range in the case schema (its interval, for a vector each
+// component's, or its choices; case_schema.hpp).
 class Section {
 public:
-    Section(const Reader& r, const toml::table& t, std::string path)
-        : r_(r), t_(t), path_(std::move(path)) {}
+    Section(const Reader& r, const toml::table& t, std::string path);
 
     [[nodiscard]] std::string key(std::string_view k) const { return join_key(path_, k); }
     [[nodiscard]] const toml::node* node(std::string_view k) const { return t_.get(k); }
@@ -73,12 +76,6 @@ public:
         if (!ok)
             fail(k, reason);
     }
-    // Physical plausibility: values beyond these bounds are typos (or hostile) and would
-    // overflow the arithmetic of a run (e.g. rho0 c0^2, mass = rho0 dx^D).
-    void require_at_most(double v, double bound, std::string_view k, std::string_view unit) const;
-    void require_triple_at_most(const Triple& v, double bound, std::string_view k,
-                                std::string_view unit) const;
-
     [[nodiscard]] std::optional<double> number(std::string_view k) const;
     [[nodiscard]] double number(std::string_view k, double def) const {
         return number(k).value_or(def);
@@ -92,24 +89,20 @@ public:
     [[nodiscard]] Triple required_triple(std::string_view k, std::string_view what) const;
     [[nodiscard]] std::optional<std::vector<std::string>> strings(std::string_view k) const;
 
-    // A string that must be one of `options`; the message lists them.
+    // A string the schema lists choices for, as the value `options` pairs it with (the
+    // schema's choices are checked by string(); each must be in `options`).
     template <class E>
     [[nodiscard]] E choice(std::string_view k, E def,
                            const std::vector<std::pair<std::string, E>>& options) const {
-        std::vector<std::string> names;
-        for (const auto& o : options)
-            names.push_back('"' + o.first + '"');
-        const auto* n = node(k);
-        if (n == nullptr)
+        const auto s = string(k);
+        if (!s)
             return def;
-        if (!n->is_string())
-            fail(k, fmt::format("expected a string, got {}; allowed: {}", type_name(*n),
-                                join_list(names)));
-        const std::string s = n->as_string()->get();
         for (const auto& [name, value] : options)
-            if (s == name)
+            if (*s == name)
                 return value;
-        fail(k, fmt::format("unknown value \"{}\"; allowed: {}", s, join_list(names)));
+        throw std::logic_error(fmt::format("the case schema allows \"{}\" for {}, which the "
+                                           "reader does not know",
+                                           *s, key(k)));
     }
 
     // Sub-table; an absent one reads as empty so that defaults and "missing key" apply.
@@ -120,6 +113,9 @@ public:
 
 private:
     [[noreturn]] void missing(std::string_view k, std::string_view what) const;
+    // The schema's range of k (case_schema.hpp) enforced on a value read from it.
+    void check_range(std::string_view k, double v) const;
+    void check_choice(std::string_view k, const std::string& v) const;
 
     // The value of k if it holds a T (a toml++ value type); `expected` opens the type error.
     template <class T>
@@ -136,6 +132,7 @@ private:
     const Reader& r_;
     const toml::table& t_;
     std::string path_;
+    std::string schema_; // the table's name in the schema: path_ without indices
 };
 
 } // namespace sluice::case_file

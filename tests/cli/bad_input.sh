@@ -109,6 +109,16 @@ cp valid.toml projection_collision.toml
 expect_refused projection_collision "projection.fluid_collision" \
     --set 'numerics.scheme="projection"' --set projection.fluid_collision=1
 
+# Keys of the WCSPH equation of state, density and wall velocity, which the projection scheme
+# ignores, are refused under it, naming the key.
+for kv in 'fluid.eos="tait"' fluid.gamma=7 'numerics.density="summation"' walls.no_slip=false \
+    limits.min_density=10 limits.max_density=2000; do
+    key=${kv%%=*}
+    name=projection_${key//./_}
+    cp valid.toml "$name.toml"
+    expect_refused "$name" "$key" --set 'numerics.scheme="projection"' --set "$kv"
+done
+
 # A bad override is refused the same way.
 cp valid.toml override.toml
 expect_refused override "numerics.kernal" --set numerics.kernal=quintic

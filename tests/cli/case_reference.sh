@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # docs/CASE_REFERENCE.md against `sluice schema`: every key of the schema appears in the doc's
 # table for its section ("## `[numerics]`", "### `[[walls.planes]]`") with the same type and
-# default (markup aside), every table of tables has its section, and the doc lists no key the
-# schema lacks. Usage: case_reference.sh SLUICE_EXE SOURCE_DIR
+# default (markup aside), an interval its text states ("in [0.5, 4]") is the schema's, every
+# table of tables has its section, and the doc lists no key the schema lacks. Usage: case_reference.sh SLUICE_EXE SOURCE_DIR
 set -euo pipefail
 exe=$1
 src=$2
@@ -19,7 +19,7 @@ def plain(s):
 
 
 # section -> key -> (type, default); "neighbours.<operator>" stands for each operator's table.
-doc, section = {}, None
+doc, section, meaning = {}, None, {}
 for n, line in enumerate(open(doc_path, encoding="utf-8"), 1):
     m = re.match(r"^#{2,3} `\[\[?([^\]`]+)\]\]?`", line)
     if m:
@@ -32,6 +32,7 @@ for n, line in enumerate(open(doc_path, encoding="utf-8"), 1):
         cells = [c.strip() for c in re.split(r"(?<!\\)\|", line.rstrip("\n"))[1:-1]]
         for key in re.findall(r"`([^`]+)`", cells[0]):
             doc[section][key] = (plain(cells[1]), plain(cells[3]), n)
+            meaning[(section, key)] = plain(cells[4]) if len(cells) > 4 else ""
 
 
 def section_of(table):
@@ -61,6 +62,13 @@ for k in schema:
     if default != k["default"]:
         errors.append(f"{full} (line {n}): default '{default}' in the doc, "
                       f"'{k['default']}' in the schema")
+    # An interval the doc's text gives ("in [0.5, 4]") is the schema's (from its min and max).
+    if k["min"] is not None or k["max"] is not None:
+        interval = k["range"].replace("each component in ", "").split(";")[0]
+        for said in re.findall(r"\bin ([\[(][^\])]*[\])])", meaning[(sec, key)], re.I):
+            if said != interval:
+                errors.append(f"{full} (line {n}): 'in {said}' in the doc, {interval} in the "
+                              f"schema")
 for sec, rows in doc.items():
     for key, (_, _, n) in rows.items():
         if key not in known.get(sec, set()):

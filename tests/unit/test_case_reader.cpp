@@ -600,14 +600,17 @@ interval = 0.01
     bad("interval = \"every_step\"", "interval = \"every step\"", "probes[2].interval");
     bad("type = \"force\"", "type = \"water_level\"", "probes[3].face");
     bad("x = 0.5", "x = 0.5\ny = 1", "probes[1].y");
-    // The projection scheme has no pair forces to sum.
-    bad("cfl = 0.2", "cfl = 0.2\nscheme = \"projection\"", "probes[3].type");
+    // The projection scheme has no pair forces to sum (the case as a projection case: without
+    // fluid.eos, which is WCSPH's).
+    const std::string projection =
+        edit("eos = \"tait\"\n", "", edit("cfl = 0.2", "cfl = 0.2\nscheme = \"projection\"", text));
+    expect_error(projection, "probes[3].type");
 
     // Nor for an area sensor's force reading: there an area sensor interpolates by default,
     // and asking for the force reading is refused.
-    const std::string no_force_probe = edit(
-        "type = \"force\"\nface = \"x+\"\nlo = [0, 0.5]\nmoment_about = [4, 0]\n",
-        "type = \"surge_front\"\n", edit("cfl = 0.2", "cfl = 0.2\nscheme = \"projection\"", text));
+    const std::string no_force_probe =
+        edit("type = \"force\"\nface = \"x+\"\nlo = [0, 0.5]\nmoment_about = [4, 0]\n",
+             "type = \"surge_front\"\n", projection);
     const CaseConfig proj = read_case(write_case("instruments_projection", no_force_probe));
     REQUIRE(proj.probes.size() == 6);
     CHECK(proj.probes[4].reading == SensorReading::interpolated);

@@ -8,9 +8,10 @@ Run from anywhere: /usr/bin/python3 tests/data/bad_cases/generate.py [--sluice E
 and commit the result; a ctest regenerates into a temporary folder and compares).
 
 The keys come from the case schema, `EXE schema` (default: build/release/sluice): for every
-key a wrong-type case, for a number with an interval range a value below and above it, for a
-string with allowed values an unknown one, and for a key of one scheme (numerics.scheme) a
-case of the other scheme carrying it. The hand-written mutations below add hostile values
+key a wrong-type case, for a number, an integer or a vector with an interval (the schema's
+min and max) a value just below and just above it (for a vector in its first component), for
+a string or an array of strings with choices an unknown one, and for a key of one scheme
+(numerics.scheme) a case of the other scheme carrying it. The hand-written mutations below add hostile values
 (overflow, non-finite numbers, names that escape the results folder) and structural damage.
 
 expected.tsv: <file>\t<what the message must name>, where the second column is a dotted key
@@ -382,29 +383,20 @@ def raw(base, text):
 # Schema-driven mutations: every key of `sluice schema`.
 
 
-def interval(text):
-    """(lo, lo_open, hi, hi_open) of a range written "[0.5, 4]", "(0, inf)" (words after a
-    ';' ignored), or None."""
-    m = re.match(r"^([\[(])\s*(-?[0-9.e+-]+|-?inf)\s*,\s*(-?[0-9.e+-]+|inf)\s*([\])])\s*(;|$)",
-                 text)
-    if not m:
-        return None
-    return float(m.group(2)), m.group(1) == "(", float(m.group(3)), m.group(4) == ")"
-
-
 def outside(spec):
-    """Values just outside the key's interval range: [(tag, value)]."""
-    r = interval(spec["range"])
-    if r is None or spec["type"] not in ("number", "integer"):
+    """Values just outside the key's interval (the schema's min and max; null is unbounded):
+    [(tag, value)], for a number or an integer; for a vector the component values."""
+    if spec["type"].split()[0] not in ("number", "integer", "vector") or \
+            (spec["min"] is None and spec["max"] is None):
         return []
-    lo, lo_open, hi, hi_open = r
     integer = spec["type"] == "integer"
     out = []
-    if math.isfinite(lo):
-        v = lo if lo_open else (lo - 1 if integer else lo - max(abs(lo), 1.0) / 2)
+    lo, hi = spec["min"], spec["max"]
+    if lo is not None:
+        v = lo if spec["min_open"] else (lo - 1 if integer else lo - max(abs(lo), 1.0) / 2)
         out.append(("below", int(v) if integer else v))
-    if math.isfinite(hi):
-        v = hi if hi_open else (hi + 1 if integer else hi + max(abs(hi), 1.0) / 2)
+    if hi is not None:
+        v = hi if spec["max_open"] else (hi + 1 if integer else hi + max(abs(hi), 1.0) / 2)
         out.append(("above", int(v) if integer else v))
     return out
 
@@ -490,9 +482,14 @@ def from_schema(schema):
             entry[spec["key"]] = v
             return doc, f"{path}.{spec['key']}" if path else spec["key"]
 
-        values = [("type", wrong_type(spec))] + outside(spec)
-        if spec["type"] == "string" and spec["range"].startswith('"'):
-            values.append(("choice", "no-such-value"))
+        values = [("type", wrong_type(spec))]
+        dim = doc0["case"]["dimension"]
+        for kind, v in outside(spec):
+            # A vector with its first component out of range, the others 0.
+            values.append((kind, [v] + [0.0] * (dim - 1) if spec["type"] == "vector" else v))
+        if spec["choices"]:
+            values.append(("choice", "no-such-value" if spec["type"] == "string"
+                           else ["no-such-value"]))
         for kind, v in values:
             doc, key = mutated(v)
             muts.append((base, f"schema_{tag}_{kind}", doc, key))

@@ -1,0 +1,99 @@
+// The size of a case: particle and micro-cell counts before anything is allocated
+// (case_size.hpp).
+#include "case_size.hpp"
+
+#include "sluice/io/case_reader.hpp"
+#include "sluice/physics/kernels.hpp"
+
+#include "case_limits.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace sluice::case_file {
+namespace {
+
+// Bounds of the case's size (the bounds of single keys are the schema's ranges): far beyond
+// any real case; past them a case is a typo or hostile input. Micro-cells of the grid: 32-bit
+// cell indices, and 21 bits per axis of a 3-D Morton key.
+constexpr double kMaxCells = 2e8;
+constexpr double kMaxCellsPerAxis3d = 2097151;
+
+// Lattice sites along an extent (the solver rounds the same way), in floating point so that a
+// hostile extent cannot overflow an integer.
+double sites(double extent, double dx) {
+    return std::max(1.0, std::round(extent / dx));
+}
+
+} // namespace
+
+// Refuses cases that would not fit any sensible machine, before anything is allocated: the
+// fluid lattice, the dummy-wall lattice around the tank, and the micro-cell grid.
+void check_case_size(const Section& root, const CaseConfig& c) {
+    const auto dim = static_cast<std::size_t>(c.dimension);
+    const auto* dx_node = root.sub("particles").node("dx");
+    double fluid = 0;
+    for (const auto& b : c.blocks) {
+        double n = 1;
+        for (std::size_t a = 0; a < dim; ++a)
+            n *= sites(b.hi[a] - b.lo[a], c.dx);
+        fluid += n;
+    }
+    if (fluid > max_case_particles)
+        root.reader().fail("particles.dx",
+                           fmt::format("the fluid blocks would hold about {:.3g} particles "
+                                       "(volume / dx^{}), above the limit of {:.0f} million; "
+                                       "increase dx",
+                                       fluid, c.dimension, max_case_particles / 1e6),
+                           dx_node);
+
+    const double support = kernel_support_factor(c.kernel) * c.h_over_dx * c.dx;
+    const double layers = std::ceil(support / c.dx);
+    if (c.walls == WallModel::dummy) {
+        // Upper bound: the whole lattice of the tank grown by the wall layers on every side.
+        double walls = 1;
+        for (std::size_t a = 0; a < dim; ++a)
+            walls *= sites(c.tank_hi[a] - c.tank_lo[a], c.dx) + 2 * layers;
+        if (walls > max_case_particles)
+            root.reader().fail(
+                "particles.dx",
+                fmt::format("the dummy walls around the tank would need up to {:.3g} particles "
+                            "((tank / dx + wall layers)^{}), above the limit of {:.0f} million; "
+                            "increase dx or make the tank smaller",
+                            walls, c.dimension, max_case_particles / 1e6),
+                dx_node);
+    }
+
+    // The solver's grid: the domain (and tank with its walls) plus one support on open axes,
+    // in cells of one support.
+    double cells = 1;
+    for (std::size_t a = 0; a < dim; ++a) {
+        double lo = c.domain_lo[a], hi = c.domain_hi[a];
+        if (!c.periodic[a]) {
+            const double wall = c.walls == WallModel::dummy ? layers * c.dx : 0.0;
+            lo = std::min(lo, c.tank_lo[a] - wall) - support;
+            hi = std::max(hi, c.tank_hi[a] + wall) + support;
+        }
+        const double n = std::max(1.0, std::floor((hi - lo) / support));
+        if (dim == 3 && n > kMaxCellsPerAxis3d)
+            root.reader().fail(
+                "particles.dx",
+                fmt::format("the domain is {:.3g} kernel supports long along {}; at most {:.0f} "
+                            "in 3-D (Morton keys): increase dx or make the domain smaller",
+                            n, kAxis[a], kMaxCellsPerAxis3d),
+                dx_node);
+        cells *= n;
+    }
+    if (cells > kMaxCells)
+        root.reader().fail("particles.dx",
+                           fmt::format("the domain would need {:.3g} micro-cells (one kernel "
+                                       "support wide), above the limit of {:.0f} million; "
+                                       "increase dx or make the domain smaller",
+                                       cells, kMaxCells / 1e6),
+                           dx_node);
+}
+
+} // namespace sluice::case_file
