@@ -9,6 +9,12 @@
 #   tasks    tasks/                                sluice/core, sluice/tasks
 #   solver, app: anything.
 #
+# And the namespace convention: core, physics and io declare their names in `sluice` (internals of
+# one file group may sit in `detail`, `case_file` or `h5` below it); the runtime, which knows no
+# formula, declares its names in `sluice::tasks`. The layer is the folder, not the namespace, so a
+# physics function is called as `sluice::f` from any layer. A named namespace outside the layer's
+# list stops the configuration too.
+#
 # Used two ways:
 #  - include()d by CMakeLists.txt: checks the source tree at configure time
 #    (sluice_check_layers), and the build re-runs it as a script when a checked file changes;
@@ -25,6 +31,14 @@ set(SLUICE_LAYER_io_DIRS include/sluice/io src/io)
 set(SLUICE_LAYER_io_ALLOWED sluice/core/ sluice/physics/ sluice/io/ sluice/version.hpp)
 set(SLUICE_LAYER_tasks_DIRS tasks)
 set(SLUICE_LAYER_tasks_ALLOWED sluice/core/ sluice/tasks/)
+
+# Named namespaces each layer may declare (a regular expression over the whole name; aliases
+# such as `namespace fs = std::filesystem` are not declarations).
+set(SLUICE_NS_SHARED "sluice|sluice::(detail|case_file|h5)|detail|case_file|h5")
+set(SLUICE_LAYER_core_NAMESPACES "${SLUICE_NS_SHARED}")
+set(SLUICE_LAYER_physics_NAMESPACES "${SLUICE_NS_SHARED}")
+set(SLUICE_LAYER_io_NAMESPACES "${SLUICE_NS_SHARED}")
+set(SLUICE_LAYER_tasks_NAMESPACES "sluice::tasks(::[a-z_]+)?|detail")
 
 set(SLUICE_LAYER_GLOBS *.hpp *.h *.cpp *.cc *.ipp *.inl)
 
@@ -57,6 +71,7 @@ endfunction()
 # Checks every layer's files under `root`; FATAL_ERROR listing each offending include.
 function(sluice_check_layers root)
   set(errors)
+  set(ns_errors)
   set(checked 0)
   foreach(layer IN LISTS SLUICE_LAYERS)
     sluice_files_of_layer(${root} ${layer} files)
@@ -81,13 +96,27 @@ function(sluice_check_layers root)
                "  ${rel} includes ${header}: the ${layer} layer may include only ${allowed}")
         endif()
       endforeach()
+      file(STRINGS ${f} decls ENCODING UTF-8
+           REGEX "^[ \t]*namespace[ \t]+[A-Za-z_][A-Za-z0-9_:]*[ \t]*{")
+      foreach(line IN LISTS decls)
+        string(REGEX MATCH "namespace[ \t]+([A-Za-z_][A-Za-z0-9_:]*)" _ "${line}")
+        set(ns ${CMAKE_MATCH_1})
+        if(NOT ns MATCHES "^(${SLUICE_LAYER_${layer}_NAMESPACES})$")
+          file(RELATIVE_PATH rel ${root} ${f})
+          set(msg "  ${rel} declares namespace ${ns}: the ${layer} layer declares its names in")
+          list(APPEND ns_errors "${msg} ${SLUICE_LAYER_${layer}_NAMESPACES}")
+        endif()
+      endforeach()
     endforeach()
   endforeach()
-  if(errors)
+  if(errors OR ns_errors)
     list(LENGTH errors n)
+    list(LENGTH ns_errors m)
     string(REPLACE ";" "\n" errors "${errors}")
+    string(REPLACE ";" "\n" ns_errors "${ns_errors}")
     message(FATAL_ERROR "Layer check (cmake/CheckLayers.cmake): ${n} include(s) against the "
-                        "layers (docs/ARCHITECTURE.md, \"Layers\"):\n${errors}\n")
+                        "layers and ${m} namespace(s) against the convention "
+                        "(docs/ARCHITECTURE.md, \"Layers\"):\n${errors}\n${ns_errors}\n")
   endif()
   if(checked EQUAL 0)
     message(FATAL_ERROR "Layer check: no layer files under ${root}")

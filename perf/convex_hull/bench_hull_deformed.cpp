@@ -3,7 +3,7 @@
 // and by a stretching flow (tests/validation/hull_deformed_sets.hpp gives the sets, the field
 // and the measures), and snapshots of the 2-D dam break (cases/dam_break_2d.toml, WCSPH) in
 // its run-up jet and its splash, fluid and wall particles as the run left them. Everything goes
-// through physics::selected_operators, the function the projection scheme's stencil stage
+// through selected_operators, the function the projection scheme's stencil stage
 // calls, with its settings (re = 3.1 dx, PNU-MPS weight, candidates within re).
 // Usage: bench_hull_deformed [dam-break dx = 0.02] [snapshot times = 0.6,1.1]
 #include "hull_deformed_sets.hpp"
@@ -68,7 +68,7 @@ DeformedSet dam_break_snapshot(double dx, double t, std::vector<char>& surface) 
         for (std::size_t j = 0; j < s.x.size(); ++j)
             if (j != i && (s.x[j] - s.x[i]).squaredNorm() < re * re)
                 off.push_back(s.x[j] - s.x[i]);
-        surface[i] = physics::is_free_surface<2>(off, 2.1 * s.dx) ? 1 : 0;
+        surface[i] = is_free_surface<2>(off, 2.1 * s.dx) ? 1 : 0;
     }
     Real ymax = 0;
     for (std::size_t i = 0; i < s.x.size(); ++i)

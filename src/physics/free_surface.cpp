@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace sluice::physics {
+namespace sluice {
 
 namespace {
 
@@ -125,4 +125,4 @@ bool is_free_surface(std::span<const Vec<D>> offsets, Real diameter,
 template bool is_free_surface<2>(std::span<const Vec<2>>, Real, FreeSurfaceScratch<2>&);
 template bool is_free_surface<3>(std::span<const Vec<3>>, Real, FreeSurfaceScratch<3>&);
 
-} // namespace sluice::physics
+} // namespace sluice

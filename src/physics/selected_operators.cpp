@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-namespace sluice::physics {
+namespace sluice {
 namespace {
 
 // The offsets an operator uses: all of them (radius: every given offset is within re), or
@@ -81,4 +81,4 @@ SLUICE_SELECTED_OPERATORS(2)
 SLUICE_SELECTED_OPERATORS(3)
 #undef SLUICE_SELECTED_OPERATORS
 
-} // namespace sluice::physics
+} // namespace sluice

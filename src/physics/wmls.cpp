@@ -10,7 +10,7 @@
 #include <cmath>
 #include <limits>
 
-namespace sluice::physics {
+namespace sluice {
 
 namespace {
 
@@ -207,4 +207,4 @@ template DiffResult<2> wmls_derivatives<2>(std::span<const Vec<2>>, std::span<co
 template DiffResult<3> wmls_derivatives<3>(std::span<const Vec<3>>, std::span<const Real>, Real,
                                            LsWeight);
 
-} // namespace sluice::physics
+} // namespace sluice

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The layer check itself (cmake/CheckLayers.cmake), so that it cannot rot silently: on
 # tests/data/layers/good (only allowed includes) it passes; on tests/data/layers/bad it fails
-# and names every offending file with its include (one per layer rule).
+# and names every offending file with its include (one per layer rule) and the one file that
+# declares a namespace outside the convention.
 # Usage: check_layers.sh <cmake> <source dir>
 set -u
 cmake=$1
@@ -27,7 +28,9 @@ for expected in \
     "src/physics/eos.cpp includes sluice/io/case_config.hpp" \
     "include/sluice/io/summary.hpp includes sluice/solver/run.hpp" \
     "tasks/src/comm.cpp includes sluice/physics/eos.hpp" \
-    "4 include(s) against the layers"; do
+    "4 include(s) against the layers" \
+    "include/sluice/physics/wmls.hpp declares namespace sluice::physics: the physics layer" \
+    "and 1 namespace(s) against the convention"; do
     if [[ $joined != *"$expected"* ]]; then
         echo "FAIL: the refusal does not say: $expected"
         fail=1
@@ -35,7 +38,8 @@ for expected in \
 done
 # The allowed includes of the bad fixture are not reported.
 for allowed in "includes sluice/core/types.hpp" "includes sluice/tasks/comm.hpp" \
-    "includes sluice/io/case_config.hpp: the io"; do
+    "includes sluice/io/case_config.hpp: the io" "declares namespace sluice::tasks" \
+    "declares namespace fs"; do
     if [[ $joined == *"$allowed"* ]]; then
         echo "FAIL: an allowed include was reported: $allowed"
         fail=1

@@ -12,7 +12,6 @@
 #include <vector>
 
 using namespace sluice;
-using namespace sluice::physics;
 
 namespace {
 

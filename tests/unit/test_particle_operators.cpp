@@ -9,7 +9,6 @@
 #include <vector>
 
 using namespace sluice;
-using namespace sluice::physics;
 
 namespace {
 

@@ -7,7 +7,6 @@
 #include <doctest/doctest.h>
 
 using namespace sluice;
-using namespace sluice::physics;
 
 TEST_CASE("source term: divergence part and density-deviation part (P3)") {
     const Real rho0 = 1000, dt = 1e-3;

@@ -118,15 +118,15 @@ TEST_CASE("shifting leaves wall particles untouched") {
     CHECK(s.back() == Vec<2>::Constant(-1)); // never written
 }
 
-// The projection scheme's pieces (physics::shift_pair_term, physics::fickian_shift; Lind et
+// The projection scheme's pieces (shift_pair_term, fickian_shift; Lind et
 // al. 2012, eqs. 21-24) on hand-computed values.
 TEST_CASE("Fickian shifting: pair term with the anti-clustering factor") {
     // W_ij = W(dx) / 2: factor 1 + 0.2 (1/2)^4 = 1.0125, times V_j = 1e-4.
-    const Vec<2> t = physics::shift_pair_term<2>(Vec<2>(1, -2), Real(0.5), Real(1), Real(1e-4));
+    const Vec<2> t = shift_pair_term<2>(Vec<2>(1, -2), Real(0.5), Real(1), Real(1e-4));
     CHECK(t[0] == doctest::Approx(1.0125e-4).epsilon(1e-14));
     CHECK(t[1] == doctest::Approx(-2.025e-4).epsilon(1e-14));
     // At the lattice spacing the factor is 1.2.
-    const Vec<2> u = physics::shift_pair_term<2>(Vec<2>(0, 3), Real(7), Real(7), Real(2));
+    const Vec<2> u = shift_pair_term<2>(Vec<2>(0, 3), Real(7), Real(7), Real(2));
     CHECK(u[0] == 0);
     CHECK(u[1] == doctest::Approx(7.2).epsilon(1e-14));
 }
@@ -135,22 +135,22 @@ TEST_CASE("Fickian shifting: down the gradient, tangential near the surface, cap
     const Vec<2> grad_c(3, 4);
     const Vec<2> up(0, 2); // plain concentration gradient: into the fluid, along +y
     // Interior: -D grad C = (-6, -8), |.| = 10.
-    Vec<2> dr = physics::fickian_shift<2>(2, grad_c, false, up, 100);
+    Vec<2> dr = fickian_shift<2>(2, grad_c, false, up, 100);
     CHECK(dr[0] == doctest::Approx(-6));
     CHECK(dr[1] == doctest::Approx(-8));
     // Capped at 5: the same direction, length 5.
-    dr = physics::fickian_shift<2>(2, grad_c, false, up, 5);
+    dr = fickian_shift<2>(2, grad_c, false, up, 5);
     CHECK(dr[0] == doctest::Approx(-3));
     CHECK(dr[1] == doctest::Approx(-4));
     // Near the surface the normal (y) part goes: (-6, 0), then the cap.
-    dr = physics::fickian_shift<2>(2, grad_c, true, up, 100);
+    dr = fickian_shift<2>(2, grad_c, true, up, 100);
     CHECK(dr[0] == doctest::Approx(-6));
     CHECK(dr[1] == 0);
-    dr = physics::fickian_shift<2>(2, grad_c, true, up, 5);
+    dr = fickian_shift<2>(2, grad_c, true, up, 5);
     CHECK(dr[0] == doctest::Approx(-5));
     CHECK(dr[1] == 0);
     // No normal known (zero plain gradient): nothing removed.
-    dr = physics::fickian_shift<2>(2, grad_c, true, Vec<2>::Zero(), 100);
+    dr = fickian_shift<2>(2, grad_c, true, Vec<2>::Zero(), 100);
     CHECK(dr[1] == doctest::Approx(-8));
 }
 
@@ -161,9 +161,9 @@ TEST_CASE("Fickian shifting: a particle moves away from a single close neighbour
     const Vec<2> r(-kDx, 0); // x_i - x_j
     const Real w = kernel.W(kDx), dw = kernel.dW(kDx);
     REQUIRE(dw < 0);
-    const Vec<2> grad_c = physics::shift_pair_term<2>(grad_W<2>(kernel, r, kDx), w, w, kDx * kDx);
+    const Vec<2> grad_c = shift_pair_term<2>(grad_W<2>(kernel, r, kDx), w, w, kDx * kDx);
     const Real coefficient = Real(1e-7);
-    const Vec<2> dr = physics::fickian_shift<2>(coefficient, grad_c, false, grad_c, kDx);
+    const Vec<2> dr = fickian_shift<2>(coefficient, grad_c, false, grad_c, kDx);
     CHECK(dr[0] == doctest::Approx(coefficient * Real(1.2) * kDx * kDx * dw).epsilon(1e-12));
     CHECK(dr[0] < 0);
     CHECK(dr[1] == 0);

@@ -11,7 +11,6 @@
 #include <vector>
 
 using namespace sluice;
-using namespace sluice::physics;
 
 namespace {
 

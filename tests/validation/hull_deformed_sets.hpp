@@ -113,9 +113,9 @@ template <class Which>
 DeformedErrors deformed_errors(const DeformedSet& s, DeformedSelection selection, Which which) {
     const Real dx = s.dx, re = 3.1 * dx, L = 10 * dx;
     const auto f = [&](const Vec<2>& p) { return std::sin(p.x() / L) * std::cos(p.y() / L); };
-    physics::OperatorSelections sel;
+    OperatorSelections sel;
     sel.gradient = sel.laplacian = sel.free_surface = deformed_policy(selection);
-    physics::SelectedOperatorScratch<2> scratch;
+    SelectedOperatorScratch<2> scratch;
     DeformedErrors out;
     Real eg = 0, ng = 0, el = 0, nl = 0, count = 0, ratio_sum = 0;
     int ratio_rows = 0;
@@ -161,8 +161,8 @@ DeformedErrors deformed_errors(const DeformedSet& s, DeformedSelection selection
             }
         grad.assign(offsets.size(), Vec<2>::Zero());
         lap.assign(offsets.size(), 0);
-        const auto ops = physics::selected_operators<2>(
-            offsets, sel, re, dx, physics::LsWeight::pnu_mps, 2.1 * dx, std::span<Vec<2>>(grad),
+        const auto ops = selected_operators<2>(
+            offsets, sel, re, dx, LsWeight::pnu_mps, 2.1 * dx, std::span<Vec<2>>(grad),
             std::span<Real>(lap), std::span<Vec<2>>(), scratch);
         Vec<2> g = Vec<2>::Zero();
         Real l = 0, abs_sum = 0, sum = 0;

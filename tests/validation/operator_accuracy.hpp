@@ -125,7 +125,7 @@ struct OperatorErrors {
 // Errors of one operator over the particles at least `margin` inside the lattice's bounding
 // box [lo, hi]^D (margin 0: every particle).
 template <int D>
-OperatorErrors operator_errors(const physics::OperatorSettings<D>& op, const OperatorBenchmark& b,
+OperatorErrors operator_errors(const OperatorSettings<D>& op, const OperatorBenchmark& b,
                                const std::vector<Vec<D>>& x,
                                const std::vector<std::vector<std::uint32_t>>& nbrs, Real margin) {
     Real eg = 0, ng = 0, el = 0, nl = 0;
@@ -142,7 +142,7 @@ OperatorErrors operator_errors(const physics::OperatorSettings<D>& op, const Ope
             offsets.push_back(x[j] - x[i]);
             diffs.push_back(TestField<D>::value(x[j]) - fi);
         }
-        const auto r = physics::particle_derivatives<D>(op, offsets, diffs);
+        const auto r = particle_derivatives<D>(op, offsets, diffs);
         const Vec<D> g = TestField<D>::gradient(x[i]);
         const Real l = TestField<D>::laplacian(x[i]);
         eg += (r.gradient - g).squaredNorm();

@@ -10,7 +10,6 @@
 #include <string>
 
 using namespace sluice;
-using namespace sluice::physics;
 using namespace sluice::testing;
 
 namespace {

@@ -2,7 +2,7 @@
 // What every particle differential operator (WMLS, MPS, SPH) returns for one particle.
 #include "sluice/core/types.hpp"
 
-namespace sluice::physics {
+namespace sluice {
 
 template <int D>
 struct DiffResult {
@@ -17,4 +17,4 @@ struct DiffResult {
     int rank = 0;
 };
 
-} // namespace sluice::physics
+} // namespace sluice

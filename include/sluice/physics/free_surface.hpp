@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-namespace sluice::physics {
+namespace sluice {
 
 // Open arc (centre - half, centre + half) on a circle parametrised by angle.
 struct SurfaceArc {
@@ -56,4 +56,4 @@ bool is_free_surface(std::span<const Vec<D>> offsets, Real diameter) {
 extern template bool is_free_surface<2>(std::span<const Vec<2>>, Real, FreeSurfaceScratch<2>&);
 extern template bool is_free_surface<3>(std::span<const Vec<3>>, Real, FreeSurfaceScratch<3>&);
 
-} // namespace sluice::physics
+} // namespace sluice

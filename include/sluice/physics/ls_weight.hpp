@@ -8,7 +8,7 @@
 //            (C2 at r = re), finite, so a neighbour crossing re changes the fit continuously.
 #include "sluice/core/types.hpp"
 
-namespace sluice::physics {
+namespace sluice {
 
 enum class LsWeight { pnu_mps, smooth };
 
@@ -22,4 +22,4 @@ inline Real ls_weight(Real r, Real re, LsWeight weight) {
     return (t * t) * (t * t) * (1 + 4 * q);
 }
 
-} // namespace sluice::physics
+} // namespace sluice

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <span>
 
-namespace sluice::physics {
+namespace sluice {
 
 struct MpsConstants {
     Real n0 = 0;
@@ -60,4 +60,4 @@ DiffResult<D> mps_derivatives(std::span<const Vec<D>> offsets, std::span<const R
     return out;
 }
 
-} // namespace sluice::physics
+} // namespace sluice

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <variant>
 
-namespace sluice::physics {
+namespace sluice {
 
 enum class Operator { wmls, mps, sph };
 
@@ -71,4 +71,4 @@ DiffResult<D> particle_derivatives(const OperatorSettings<D>& s, std::span<const
     return {};
 }
 
-} // namespace sluice::physics
+} // namespace sluice

@@ -21,7 +21,7 @@
 
 #include <algorithm>
 
-namespace sluice::physics {
+namespace sluice {
 
 // P1.
 template <int D>
@@ -143,4 +143,4 @@ inline Real row_residual(Real bhat, Real y_i, Real sum_a_y) {
     return bhat - (y_i - sum_a_y);
 }
 
-} // namespace sluice::physics
+} // namespace sluice

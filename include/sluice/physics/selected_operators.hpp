@@ -20,7 +20,7 @@
 #include <span>
 #include <vector>
 
-namespace sluice::physics {
+namespace sluice {
 
 struct OperatorSelections {
     NeighbourSelection gradient, laplacian, free_surface;
@@ -60,4 +60,4 @@ selected_operators(std::span<const Vec<D>> offsets, const OperatorSelections& se
                    std::span<Real> laplacian, std::span<Vec<D>> linear_gradient,
                    SelectedOperatorScratch<D>& scratch);
 
-} // namespace sluice::physics
+} // namespace sluice

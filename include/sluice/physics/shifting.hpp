@@ -56,8 +56,6 @@ SLUICE_FLATTEN void particle_shift(const Neighbourhood<D>& nb, const K& kernel,
     }
 }
 
-namespace physics {
-
 // Fickian particle shifting of the projection scheme (docs/PROJECTION.md, "Particle
 // shifting"): Lind et al. (2012, J. Comput. Phys. 231, 1499), eqs. (21)-(24), after Xu et al.
 // (2009):
@@ -96,7 +94,5 @@ Vec<D> fickian_shift(Real coefficient, const Vec<D>& grad_c, bool near_surface,
         dr *= max_shift / len;
     return dr;
 }
-
-} // namespace physics
 
 } // namespace sluice

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <span>
 
-namespace sluice::physics {
+namespace sluice {
 
 template <int D, class K>
 DiffResult<D> sph_derivatives(std::span<const Vec<D>> offsets, std::span<const Real> differences,
@@ -35,4 +35,4 @@ DiffResult<D> sph_derivatives(std::span<const Vec<D>> offsets, std::span<const R
     return out;
 }
 
-} // namespace sluice::physics
+} // namespace sluice

@@ -25,7 +25,7 @@
 #include <span>
 #include <vector>
 
-namespace sluice::physics {
+namespace sluice {
 
 // Number of Taylor coefficients fitted: D first and D (D + 1) / 2 second derivatives.
 template <int D>
@@ -138,4 +138,4 @@ extern template DiffResult<2> wmls_derivatives<2>(std::span<const Vec<2>>, std::
 extern template DiffResult<3> wmls_derivatives<3>(std::span<const Vec<3>>, std::span<const Real>,
                                                   Real, LsWeight);
 
-} // namespace sluice::physics
+} // namespace sluice

@@ -31,7 +31,7 @@ struct ProjectionGroup {
     std::vector<Vec<D>> scratch_offsets, scratch_linear, scratch_grad;
     std::vector<Real> scratch_lap;
     std::vector<std::uint32_t> scratch_pairs;
-    physics::SelectedOperatorScratch<D> scratch_ops;
+    SelectedOperatorScratch<D> scratch_ops;
     std::array<double, 6> partial{}; // reduction partials of the last solver run, this group
     // Block-Jacobi preconditioner (projection.preconditioner = "block_lu"): the factorised
     // diagonal block of this group's rows, assembled after ppe_source; its scratch.
@@ -97,8 +97,8 @@ struct ProjectionData {
     Real lattice_sum = 0; // S = sum_j L_ij of the full lattice
     Real surface_diameter = 0;
     Real collision_distance = 0; // wall and fluid-fluid collisions (docs/PROJECTION.md)
-    physics::LsWeight weight = physics::LsWeight::pnu_mps;
-    physics::OperatorSelections selections; // [neighbours.<operator>] (all radius by default)
+    LsWeight weight = LsWeight::pnu_mps;
+    OperatorSelections selections; // [neighbours.<operator>] (all radius by default)
 
     PressureSolveRecord last; // the last step's solve
     PressureSolveTotals totals;

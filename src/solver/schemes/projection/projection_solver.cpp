@@ -120,7 +120,7 @@ void ProjectionScheme<D>::solver_stage(int stage, int group) {
                 const std::uint32_t j = list.j[p];
                 sum += G.a[p] * (j >= lo && j < hi ? x[j] : d.y[j]);
             }
-            const Real res = physics::row_residual(d.bhat[i], x[i], sum);
+            const Real res = row_residual(d.bhat[i], x[i], sum);
             x[i] += omega * res;
             q[0] += res * res;
             continue;

@@ -43,7 +43,7 @@ std::vector<Vec<D>> lattice_offsets(Real dx, Real re) {
     return out;
 }
 
-// Particle shifting (docs/PROJECTION.md, "Particle shifting"; physics::fickian_shift) of the
+// Particle shifting (docs/PROJECTION.md, "Particle shifting"; fickian_shift) of the
 // fluid particles of a group, from the positions at the start of the step, over the step's
 // neighbour list (every particle within re, fluid and wall, each of volume dx^D). Near the
 // free surface: a P5 row or a kernel sum below 0.95 (as WCSPH's particle_shift).
@@ -71,12 +71,12 @@ void shift_group(const K& kernel, const NeighbourList<D>& list, const Particles<
             if (len <= 0)
                 continue;
             const Vec<D> grad_w = grad_W<D>(kernel, r, len);
-            grad_c += physics::shift_pair_term<D>(grad_w, w, w_dx, volume);
+            grad_c += shift_pair_term<D>(grad_w, w, w_dx, volume);
             grad_plain += volume * grad_w;
         }
         const bool near_surface = row[i] == PpeRow::surface || completeness < Real(0.95);
         shift[i] =
-            physics::fickian_shift<D>(coefficient, grad_c, near_surface, grad_plain, max_shift);
+            fickian_shift<D>(coefficient, grad_c, near_surface, grad_plain, max_shift);
     }
 }
 
@@ -88,13 +88,13 @@ void ProjectionScheme<D>::init_projection() {
     ProjectionData<D>& d = *proj_;
     d.re = Real(kernel_support_factor(case_.cfg.kernel) * case_.h);
     d.surface_diameter = Real(case_.cfg.projection.surface_diameter_over_dx * case_.cfg.dx);
-    d.collision_distance = Real(physics::wall_collision_distance_over_dx * case_.cfg.dx);
+    d.collision_distance = Real(wall_collision_distance_over_dx * case_.cfg.dx);
     d.selections = {case_.cfg.neighbours.gradient, case_.cfg.neighbours.laplacian,
                     case_.cfg.neighbours.free_surface};
     const std::vector<Vec<D>> lattice = lattice_offsets<D>(Real(case_.cfg.dx), d.re);
     for (const Vec<D>& o : lattice)
-        d.n0 += physics::ls_weight(o.norm(), d.re, d.weight);
-    const auto st = physics::wmls_stencil<D>(lattice, d.re, d.weight);
+        d.n0 += ls_weight(o.norm(), d.re, d.weight);
+    const auto st = wmls_stencil<D>(lattice, d.re, d.weight);
     d.lattice_sum = st.laplacian.sum();
     // Incompressible: every fluid particle keeps rho0 and the volume dx^D.
     const Real volume = Real(std::pow(case_.cfg.dx, D));
@@ -156,11 +156,11 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
     ProjectionGroup<D>& G = d.groups[gi];
     const auto& cells = cells_.topo.cells[gi];
     const Real re = d.re;
-    const physics::LsWeight weight = d.weight;
+    const LsWeight weight = d.weight;
     if (stage == 0) {
         nb.build_list(
             cells, list,
-            [re, weight](Real r2) { return physics::ls_weight(std::sqrt(r2), re, weight); },
+            [re, weight](Real r2) { return ls_weight(std::sqrt(r2), re, weight); },
             [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; },
             [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; });
         G.lap.resize(list.pairs);
@@ -185,10 +185,10 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 Real wsum = 0, rhs = 0;
                 for (std::uint32_t p = b; p < e; ++p) {
                     const Vec<D> off = offset_of(i, p);
-                    const Real w = physics::ls_weight(off.norm(), re, physics::LsWeight::smooth);
+                    const Real w = ls_weight(off.norm(), re, LsWeight::smooth);
                     G.a[p] = w;
                     wsum += w;
-                    rhs += w * physics::wall_row_term<D>(Real(case_.cfg.rho0),
+                    rhs += w * wall_row_term<D>(Real(case_.cfg.rho0),
                                                          case_.momentum.gravity, -off);
                 }
                 for (std::uint32_t p = b; p < e; ++p)
@@ -220,9 +220,9 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                     G.scratch_pairs.push_back(p);
                     n += list.factor[p];
                     if (case_.cfg.projection.fluid_collision && P_.kind[j] == Kind::fluid)
-                        v_i += physics::collision_velocity_change<D>(
+                        v_i += collision_velocity_change<D>(
                             P_.v[i], P_.v[j], off, d.collision_distance,
-                            physics::fluid_collision_restitution, Real(clock_.dt));
+                            fluid_collision_restitution, Real(clock_.dt));
                 }
                 d.number_density[i] = n;
                 // The WMLS fits and the surface test, each over its operator's neighbours
@@ -234,7 +234,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 G.scratch_grad.resize(count);
                 G.scratch_lap.resize(count);
                 G.scratch_linear.resize(first_order ? count : 0);
-                const auto ops = physics::selected_operators<D>(
+                const auto ops = selected_operators<D>(
                     offsets, d.selections, re, Real(case_.cfg.dx), weight, d.surface_diameter,
                     std::span<Vec<D>>(G.scratch_grad), std::span<Real>(G.scratch_lap),
                     std::span<Vec<D>>(G.scratch_linear), G.scratch_ops);
@@ -255,12 +255,12 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                             G.grad_correct[G.scratch_pairs[m]] = G.scratch_linear[m];
                 }
                 const bool surface = !ops.ok || ops.free_surface ||
-                                     physics::below_surface_density(
+                                     below_surface_density(
                                          n, d.n0, Real(case_.cfg.projection.surface_density_ratio));
                 d.row[i] = surface ? PpeRow::surface : PpeRow::fluid;
                 // A stencil that cannot fit second derivatives gives no viscous term.
                 d.u_star[i] =
-                    physics::predicted_velocity<D>(v_i, ops.laplacian_ok ? lap_u : Vec<D>::Zero(),
+                    predicted_velocity<D>(v_i, ops.laplacian_ok ? lap_u : Vec<D>::Zero(),
                                                    Real(case_.cfg.viscosity / case_.cfg.rho0),
                                                    case_.momentum.gravity, Real(clock_.dt));
                 continue;
@@ -272,7 +272,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 div += G.grad[p].dot(d.u_star[list.j[p]] - d.u_star[i]);
             }
             if (d.row[i] == PpeRow::fluid &&
-                sum <= physics::ppe_min_diagonal_fraction * d.lattice_sum)
+                sum <= ppe_min_diagonal_fraction * d.lattice_sum)
                 d.row[i] = PpeRow::surface;
             if (d.row[i] == PpeRow::surface) {
                 for (std::uint32_t p = b; p < e; ++p)
@@ -280,7 +280,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 d.bhat[i] = 0;
                 continue;
             }
-            const Real src = physics::ppe_source(Real(case_.cfg.rho0), Real(clock_.dt),
+            const Real src = ppe_source(Real(case_.cfg.rho0), Real(clock_.dt),
                                                  Real(case_.cfg.projection.gamma), div,
                                                  d.number_density[i], d.n0);
             for (std::uint32_t p = b; p < e; ++p)
@@ -309,8 +309,8 @@ void ProjectionScheme<D>::correct_stage(int group) {
     Real speed = 0;
     std::string failure;
     const Real g_norm = case_.momentum.gravity.norm();
-    const physics::PressureLevel level =
-        d.free_level ? physics::PressureLevel::free : physics::PressureLevel::surface;
+    const PressureLevel level =
+        d.free_level ? PressureLevel::free : PressureLevel::surface;
     // Particle shifting, D = A h^2 per step (not scaled by the flow speed: still water needs
     // it too), added to P8's displacement.
     const bool shifting = case_.cfg.projection.shifting > 0 && !d.failed;
@@ -333,14 +333,14 @@ void ProjectionScheme<D>::correct_stage(int group) {
         // P7 with the stabilised gradient (docs/PROJECTION.md, "Stabilised gradient"): the
         // reference is the smallest positive pressure around i (surface particles, at 0, are
         // not a reference for their interior neighbours).
-        Real p_ref = physics::gradient_pressure(P_.p[i], level);
+        Real p_ref = gradient_pressure(P_.p[i], level);
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            p_ref = physics::gradient_reference(p_ref, P_.p[list.j[p]], level);
+            p_ref = gradient_reference(p_ref, P_.p[list.j[p]], level);
         Vec<D> grad = Vec<D>::Zero();
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             grad +=
-                grad_coefficient[p] * (physics::gradient_pressure(P_.p[list.j[p]], level) - p_ref);
-        Vec<D> v = physics::corrected_velocity<D>(d.u_star[i], grad, Real(case_.cfg.rho0),
+                grad_coefficient[p] * (gradient_pressure(P_.p[list.j[p]], level) - p_ref);
+        Vec<D> v = corrected_velocity<D>(d.u_star[i], grad, Real(case_.cfg.rho0),
                                                   Real(clock_.dt));
         const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
@@ -348,7 +348,7 @@ void ProjectionScheme<D>::correct_stage(int group) {
                 Vec<D> offset = P_.x[list.j[p]] - P_.x[i];
                 if (list.periodic)
                     offset -= list.shift[p];
-                v = physics::wall_collision<D>(v, offset, collision, Real(clock_.dt));
+                v = wall_collision<D>(v, offset, collision, Real(clock_.dt));
             }
         Vec<D> x =
             projection_drift<D>(P_.x[i], v, Real(clock_.dt), case_.planes,
