@@ -1,5 +1,6 @@
-// The rank plumbing: cut points and peers, the halo plan, particles changing owner, the gathered
-// cost list, the test gather. Pure data movement and bookkeeping (rank_exchange.hpp).
+// The rank plumbing: cut points and peers, the halo plan, particles changing owner (the
+// migration of a rebuild is in rank_migration.cpp), the gathered cost list, the test gather. Pure
+// data movement and bookkeeping (rank_exchange.hpp).
 #include "sluice/solver/rank_exchange.hpp"
 
 #include "particle_messages.hpp"
@@ -12,7 +13,10 @@ namespace sluice {
 
 template <int D>
 void RankExchange<D>::find_peers() {
-    peers_ = tasks::peer_ranks(grid_, layout_)[static_cast<std::size_t>(comm_.rank())];
+    const auto all = tasks::peer_ranks(grid_, layout_);
+    peers_ = all[static_cast<std::size_t>(comm_.rank())];
+    reach_ = tasks::two_step_ranks(all, comm_.rank());
+    halo_in_known_ = false; // counts of the old peers
 }
 
 template <int D>
@@ -98,9 +102,9 @@ RankExchange<D>::all_occupied_cells(const std::vector<tasks::CurveUnit>& mine) c
 }
 
 template <int D>
-tasks::MessageRecord RankExchange<D>::plan_halo(Particles<D>& P, const CellRanges& ranges,
-                                                const std::vector<CellOccupancy>& occupied,
-                                                std::size_t owned) {
+std::optional<tasks::MessageRecord>
+RankExchange<D>::plan_halo(Particles<D>& P, const CellRanges& ranges,
+                           const std::vector<CellOccupancy>& occupied, std::size_t owned) {
     const double t0 = tasks::clock_seconds();
     const std::size_t npeers = peers_.size();
     std::vector<CellIndex> cells;
@@ -124,27 +128,56 @@ tasks::MessageRecord RankExchange<D>::plan_halo(Particles<D>& P, const CellRange
             plan_.send_walls[pu] += walls;
         }
     }
-    // Each peer learns how many particles (and walls) it will receive, so that it can size
-    // its arrays and post exact receives before the step starts.
-    std::vector<tasks::Bytes> out(npeers), in;
-    for (std::size_t p = 0; p < npeers; ++p) {
-        tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_count[p]));
-        tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_walls[p]));
+    std::optional<tasks::MessageRecord> record;
+    if (halo_in_known_) {
+        // The migration's round brought them (rank_migration.cpp).
+        plan_.recv_count = halo_in_count_;
+        plan_.recv_walls = halo_in_walls_;
+        halo_in_known_ = false;
+    } else {
+        // Each peer learns how many particles (and walls) it will receive, so that it can size
+        // its arrays and post exact receives before the step starts.
+        std::vector<tasks::Bytes> out(npeers), in;
+        for (std::size_t p = 0; p < npeers; ++p) {
+            tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_count[p]));
+            tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_walls[p]));
+        }
+        comm_.exchange(peers_, out, in, 12);
+        plan_.recv_count.assign(npeers, 0);
+        plan_.recv_walls.assign(npeers, 0);
+        for (std::size_t p = 0; p < npeers; ++p) {
+            std::size_t pos = 0;
+            plan_.recv_count[p] = tasks::take<std::uint64_t>(in[p], pos);
+            plan_.recv_walls[p] = tasks::take<std::uint64_t>(in[p], pos);
+        }
+        record =
+            tasks::MessageRecord{"halo counts", -1, true, 16 * npeers, t0, tasks::clock_seconds()};
     }
-    comm_.exchange(peers_, out, in, 12);
-    plan_.recv_count.assign(npeers, 0);
-    plan_.recv_walls.assign(npeers, 0);
     plan_.recv_offset.assign(npeers, 0);
     std::size_t next = owned;
     for (std::size_t p = 0; p < npeers; ++p) {
-        std::size_t pos = 0;
-        plan_.recv_count[p] = tasks::take<std::uint64_t>(in[p], pos);
-        plan_.recv_walls[p] = tasks::take<std::uint64_t>(in[p], pos);
         plan_.recv_offset[p] = next;
         next += plan_.recv_count[p];
     }
     P.resize(next);
-    return {"halo counts", -1, true, 16 * npeers, t0, tasks::clock_seconds()};
+    return record;
+}
+
+template <int D>
+bool RankExchange<D>::halo_counts_agree() const {
+    std::vector<tasks::Bytes> out(peers_.size()), in;
+    for (std::size_t p = 0; p < peers_.size(); ++p) {
+        tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_count[p]));
+        tasks::put(out[p], static_cast<std::uint64_t>(plan_.send_walls[p]));
+    }
+    comm_.exchange(peers_, out, in, 13);
+    bool agree = true;
+    for (std::size_t p = 0; p < peers_.size(); ++p) {
+        std::size_t pos = 0;
+        agree = agree && tasks::take<std::uint64_t>(in[p], pos) == plan_.recv_count[p] &&
+                tasks::take<std::uint64_t>(in[p], pos) == plan_.recv_walls[p];
+    }
+    return agree;
 }
 
 template <int D>
@@ -162,39 +195,6 @@ RankExchange<D>::boundary_groups(const tasks::GroupTopology& topo) const {
                     f.push_back(g);
             }
     return facing;
-}
-
-template <int D>
-tasks::MessageRecord RankExchange<D>::migrate(Particles<D>& P) {
-    // A particle moves less than one cell per step, so it can only enter a peer's cell.
-    const double t0 = tasks::clock_seconds();
-    std::vector<tasks::Bytes> out(peers_.size()), in;
-    std::vector<std::size_t> keep;
-    keep.reserve(P.size());
-    for (std::size_t i = 0; i < P.size(); ++i) {
-        const int owner = layout_.rank_of(grid_.morton(grid_.coords(P.x[i])));
-        if (owner == comm_.rank()) {
-            keep.push_back(i);
-            continue;
-        }
-        const auto it = std::lower_bound(peers_.begin(), peers_.end(), owner);
-        if (it == peers_.end() || *it != owner)
-            throw std::logic_error(fmt::format("particle {} jumped to rank {}, not a neighbour "
-                                               "of rank {}",
-                                               P.id[i], owner, comm_.rank()));
-        messages::pack_particle(P, i, out[static_cast<std::size_t>(it - peers_.begin())]);
-    }
-    comm_.exchange(peers_, out, in, 11);
-    std::size_t bytes = 0;
-    for (const auto& b : out)
-        bytes += b.size();
-    if (keep.size() != P.size()) {
-        P.permute(keep);
-        P.resize(keep.size());
-    }
-    for (const auto& b : in)
-        messages::unpack_particles<D>(b, P);
-    return {"migrate", -1, true, bytes, t0, tasks::clock_seconds()};
 }
 
 template <int D>

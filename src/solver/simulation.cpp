@@ -243,7 +243,8 @@ void Simulation<D>::rebin_and_decompose() {
     for (const auto& c : occupied_)
         occ.push_back({c.key, c.cell, static_cast<double>(c.count)});
     if (comm_.parallel())
-        between_.push_back(ranks_.plan_halo(P_, ranges_, occupied_, owned_));
+        if (auto counts = ranks_.plan_halo(P_, ranges_, occupied_, owned_))
+            between_.push_back(*counts);
 
     // A particle can enter a new cell without changing the sort order, so the occupied set,
     // the group adjacency and the groups facing each peer are checked every step.

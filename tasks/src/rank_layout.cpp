@@ -97,23 +97,46 @@ std::vector<std::vector<int>> peer_ranks(const CellGrid<D>& grid, const RankLayo
     return peers;
 }
 
+std::vector<int> two_step_ranks(const std::vector<std::vector<int>>& peers, int rank) {
+    std::vector<int> out;
+    for (int p : peers[static_cast<std::size_t>(rank)]) {
+        out.push_back(p);
+        for (int q : peers[static_cast<std::size_t>(p)])
+            if (q != rank)
+                out.push_back(q);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+template <int D>
+void adjacent_owners(const CellGrid<D>& grid, const RankLayout& layout, CellIndex cell, int owner,
+                     std::vector<int>& out) {
+    out.clear();
+    NeighbourCell<D> nbr[D == 2 ? 9 : 27];
+    const int n = adjacent_cells(grid, cell, nbr);
+    for (int m = 0; m < n; ++m) {
+        const int o = layout.rank_of(grid.morton(grid.unlinear(nbr[m].cell)));
+        if (o != owner)
+            out.push_back(o);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
 template <int D>
 std::vector<std::vector<int>> halo_targets(const CellGrid<D>& grid, const RankLayout& layout,
                                            int rank, const std::vector<int>& peers,
                                            const std::vector<CellIndex>& occupied_cells) {
     std::vector<std::vector<int>> out(occupied_cells.size());
-    NeighbourCell<D> nbr[D == 2 ? 9 : 27];
+    std::vector<int> owners;
     for (std::size_t k = 0; k < occupied_cells.size(); ++k) {
-        const int n = adjacent_cells(grid, occupied_cells[k], nbr);
-        for (int m = 0; m < n; ++m) {
-            const int o = layout.rank_of(grid.morton(grid.unlinear(nbr[m].cell)));
-            if (o == rank)
-                continue;
-            const auto it = std::lower_bound(peers.begin(), peers.end(), o);
-            out[k].push_back(static_cast<int>(it - peers.begin()));
-        }
-        std::sort(out[k].begin(), out[k].end());
-        out[k].erase(std::unique(out[k].begin(), out[k].end()), out[k].end());
+        adjacent_owners(grid, layout, occupied_cells[k], rank, owners);
+        // Ranks and peer indices are in the same (sorted) order.
+        for (int o : owners)
+            out[k].push_back(
+                static_cast<int>(std::lower_bound(peers.begin(), peers.end(), o) - peers.begin()));
     }
     return out;
 }
@@ -122,6 +145,10 @@ template RankLayout cut_ranks_by_key<2>(const CellGrid<2>&, int);
 template RankLayout cut_ranks_by_key<3>(const CellGrid<3>&, int);
 template std::vector<std::vector<int>> peer_ranks<2>(const CellGrid<2>&, const RankLayout&);
 template std::vector<std::vector<int>> peer_ranks<3>(const CellGrid<3>&, const RankLayout&);
+template void adjacent_owners<2>(const CellGrid<2>&, const RankLayout&, CellIndex, int,
+                                 std::vector<int>&);
+template void adjacent_owners<3>(const CellGrid<3>&, const RankLayout&, CellIndex, int,
+                                 std::vector<int>&);
 template std::vector<std::vector<int>> halo_targets<2>(const CellGrid<2>&, const RankLayout&, int,
                                                        const std::vector<int>&,
                                                        const std::vector<CellIndex>&);

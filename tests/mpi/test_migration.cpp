@@ -1,7 +1,8 @@
 // Migration conserves particles exactly: in a periodic box where everything moves
 // diagonally, particles cross rank boundaries (and periodic seams) every few steps; after
 // every step the union of all ranks' particles is exactly the initial set of ids, each once,
-// with the same total mass, and ownership has really changed hands.
+// with the same total mass, and ownership has really changed hands. The halo counts that
+// travel with the migrants match what each peer then sends.
 #include "sluice/io/case_reader.hpp"
 #include "sluice/solver/simulation.hpp"
 
@@ -35,9 +36,12 @@ TEST_CASE("particles migrate between ranks without loss or duplication") {
                                       static_cast<std::ptrdiff_t>(sim.owned()));
     std::sort(mine0.begin(), mine0.end());
 
-    int bad_steps = 0;
+    int bad_steps = 0, bad_plans = 0;
     for (int s = 0; s < 120; ++s) {
         sim.step();
+        // The halo counts travel with the migrants (rank_migration.cpp): every peer must send
+        // exactly what this rank sized its arrays for.
+        bad_plans += sim.halo_plan_agrees() ? 0 : 1;
         const Particles<2> all = sim.gather_particles();
         if (comm.rank() != 0)
             continue;
@@ -49,6 +53,8 @@ TEST_CASE("particles migrate between ranks without loss or duplication") {
             ++bad_steps;
     }
     CHECK(bad_steps == 0);
+    CHECK(bad_plans == 0);
+    CHECK(sim.list_rebuilds() >= 2);
     CHECK(sim.rebalances().size() >= 2);
 
     // The flow moved 0.1 m or more: this rank's set of particles is not the one it started with.

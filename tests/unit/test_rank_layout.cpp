@@ -101,6 +101,29 @@ TEST_CASE("periodic wrap makes the first and last rank neighbours") {
     CHECK(t[2] == std::vector<int>{0}); // peer index 0 = rank 1
 }
 
+TEST_CASE("ranks two peer steps away and the owners around a cell") {
+    // 12 cells along x in one row, four slabs of 3 cells: 0 | 1 | 2 | 3, open ends. Rank 0's
+    // peers are {1}; within two steps it also reaches rank 2, not rank 3.
+    const auto g = CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(12, 1), 1.0, {false, false});
+    REQUIRE(g.dims[0] == 12);
+    RankLayout l;
+    l.key_begin = {0, g.morton({3, 0}), g.morton({6, 0}), g.morton({9, 0})};
+    const auto peers = peer_ranks(g, l);
+    CHECK(two_step_ranks(peers, 0) == std::vector<int>{1, 2});
+    CHECK(two_step_ranks(peers, 1) == std::vector<int>{0, 2, 3});
+    CHECK(two_step_ranks(peers, 3) == std::vector<int>{1, 2});
+    std::vector<int> owners;
+    // x = 3 is rank 1's first cell: it touches rank 0 (x = 2) only.
+    adjacent_owners(g, l, g.linear({3, 0}), 1, owners);
+    CHECK(owners == std::vector<int>{0});
+    // Were x = 5 owned by rank 0 (a migrant's view from outside), it would be a halo cell of
+    // ranks 1 and 2.
+    adjacent_owners(g, l, g.linear({5, 0}), 0, owners);
+    CHECK(owners == std::vector<int>{1, 2});
+    adjacent_owners(g, l, g.linear({1, 0}), 0, owners);
+    CHECK(owners.empty());
+}
+
 TEST_CASE("peer sets are symmetric in 3-D") {
     const auto g = CellGrid<3>::make(Vec<3>(0, 0, 0), Vec<3>(6, 5, 4), 1.0, {true, false, false});
     for (int ranks : {2, 3, 5, 7}) {

@@ -16,6 +16,7 @@
 #include "sluice/tasks/rank_layout.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace sluice {
@@ -40,16 +41,25 @@ public:
 
     // The halo plan of the sorted owned particles P[0, owned) (`ranges`, `occupied`: the rebin
     // of them): which cells go to which peer, and how many particles come from each; P grows
-    // to hold them. Collective among peers; returns the count exchange's record.
-    tasks::MessageRecord plan_halo(Particles<D>& P, const CellRanges& ranges,
-                                   const std::vector<CellOccupancy>& occupied, std::size_t owned);
+    // to hold them. After migrate() the counts came with the migrants and nothing is sent;
+    // otherwise (start, rebalance) it is collective among peers and returns the record of its
+    // count exchange.
+    std::optional<tasks::MessageRecord> plan_halo(Particles<D>& P, const CellRanges& ranges,
+                                                  const std::vector<CellOccupancy>& occupied,
+                                                  std::size_t owned);
+    // Whether every peer will send exactly the particles (and walls) this rank's plan expects
+    // from it: each rank sends its peers its send counts and compares (an extra round, for
+    // tests). Collective among peers.
+    [[nodiscard]] bool halo_counts_agree() const;
     // Per peer, the local groups holding a halo cell of it (after plan_halo, whose occupied
     // cells are the concatenated cell lists of `topo`).
     [[nodiscard]] std::vector<std::vector<int>>
     boundary_groups(const tasks::GroupTopology& topo) const;
 
     // Sends every particle of P whose cell is a peer's to that peer and appends those
-    // received (P holds owned particles only). Collective among peers.
+    // received (P holds owned particles only). The same round carries the halo counts of the
+    // next plan_halo (rank_migration.cpp), so a rebuild exchanges once. Collective among the
+    // ranks within two peer steps.
     tasks::MessageRecord migrate(Particles<D>& P);
 
     // Every rank's `mine` (cells with their cost, in curve order) in rank order, hence in curve
@@ -74,7 +84,12 @@ private:
     const CellGrid<D>& grid_;
     tasks::RankLayout layout_;
     std::vector<int> peers_;
+    std::vector<int> reach_; // peers and their peers: whom a migration's halo counts concern
     HaloPlan plan_;
+    // Per peer, the particles (and walls) it will send as halo after the last migrate(); used
+    // by the next plan_halo instead of a count round when `halo_in_known_`.
+    std::vector<std::size_t> halo_in_count_, halo_in_walls_;
+    bool halo_in_known_ = false;
     std::vector<std::vector<int>> occupied_targets_; // per occupied cell: peers it is halo of
 };
 

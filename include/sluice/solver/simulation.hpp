@@ -116,6 +116,9 @@ public:
     // every rank, src/io/h5_parallel.hpp; totals in src/solver/run_totals.hpp).
     [[nodiscard]] Particles<D> gather_particles() const { return ranks_.gather(P_, owned_); }
     [[nodiscard]] const tasks::Comm& comm() const { return comm_; }
+    // Whether every peer's halo message will hold what this rank's plan expects (an extra
+    // count round; for tests). Collective.
+    [[nodiscard]] bool halo_plan_agrees() const { return ranks_.halo_counts_agree(); }
     [[nodiscard]] const tasks::RankLayout& rank_layout() const { return ranks_.layout(); }
     [[nodiscard]] int threads() const { return threads_; }
     [[nodiscard]] const tasks::RankProfile& profile() const { return profile_; }

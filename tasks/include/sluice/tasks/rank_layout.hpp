@@ -45,6 +45,18 @@ double imbalance(const std::vector<double>& cost_per_rank);
 template <int D>
 std::vector<std::vector<int>> peer_ranks(const CellGrid<D>& grid, const RankLayout& layout);
 
+// The ranks within two peer steps of `rank` (its peers and their peers, itself excluded),
+// sorted, from peer_ranks' lists. Symmetric like the peers. It holds every rank that can own
+// a cell adjacent to a cell of one of `rank`'s peers: the ranks a migration can change the
+// halo of (RankExchange::migrate tells them in its one round).
+std::vector<int> two_step_ranks(const std::vector<std::vector<int>>& peers, int rank);
+
+// The ranks other than `owner` whose range holds a cell adjacent to `cell` (periodic wrap
+// included), sorted, into `out`: the ranks that `cell` is a halo cell of while `owner` owns it.
+template <int D>
+void adjacent_owners(const CellGrid<D>& grid, const RankLayout& layout, CellIndex cell, int owner,
+                     std::vector<int>& out);
+
 // For each occupied cell of `rank` (in key order), the peers whose range holds an adjacent
 // cell: out[k] lists the peer indices (positions in `peers`) cell k is a halo cell of.
 template <int D>
