@@ -38,8 +38,10 @@ void ProjectionScheme<D>::solver_stage(int stage, int group) {
         // operator) M is the identity and y is p or s itself.
         const bool solve = d.preconditioned && G.block.ready();
         G.work.resize(static_cast<Eigen::Index>(solve ? G.block.size() : 0));
-        // Two-level (docs/PROJECTION.md, "Preconditioner"): the coarse correction first,
-        // y = P e + M_g^{-1} (z - A P e), e = A_c^{-1} R z (computed by the main thread).
+        // Two-level (docs/PROJECTION.md, "Two-level"): the coarse correction first, then the
+        // row scaling alone (no block is factorised for "two_level"; a block, were it ready,
+        // would act on the rest): y = P e + M_g^{-1} (z - A P e), e = A_c^{-1} R z (computed
+        // by the main thread).
         const CoarseLevel& cl = d.coarse;
         const auto coarse_of = [&](std::uint32_t i) {
             const std::int32_t c = cl.of[i];
