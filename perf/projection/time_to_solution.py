@@ -18,7 +18,8 @@ preconditioner), "ilu0" (adaptive dt, projection.preconditioner = "block_ilu0"),
 preconditioner named), "fixed-jacobi" (both old settings: the scheme as it was before
 issue 22); "ilu0-tol6", "ilu0-tol5", "jacobi-tol6", "jacobi-tol5" (a looser
 projection.tolerance, 1e-6 or 1e-5 instead of the case's 1e-8); "shift0.05", "shift0.2", "shift0.5"
-(particle shifting, projection.shifting = 0.05, 0.2 or 0.5).
+(particle shifting, projection.shifting = 0.05, 0.2 or 0.5); "two-level", "two-level-tol6"
+(projection.preconditioner = "two_level", at the case's 1e-8 or at 1e-6).
 
 Usage: perf/projection/time_to_solution.py [--dx 0.01] [--end 1.0] [--rounds 1]
            [--variants adaptive,fixed,jacobi,fixed-jacobi] [--threads 1] [--sluice PATH]
@@ -59,6 +60,10 @@ VARIANTS = {
     "ilu0-tol5": ['projection.preconditioner="block_ilu0"', "projection.tolerance=1e-5"],
     "jacobi-tol6": ['projection.preconditioner="jacobi"', "projection.tolerance=1e-6"],
     "jacobi-tol5": ['projection.preconditioner="jacobi"', "projection.tolerance=1e-5"],
+    # The two-level preconditioner (coarse correction on aggregates of 2^D cells, then the
+    # block ILU(0); docs/PROJECTION.md, "Preconditioner").
+    "two-level": ['projection.preconditioner="two_level"'],
+    "two-level-tol6": ['projection.preconditioner="two_level"', "projection.tolerance=1e-6"],
     # Particle shifting (projection.shifting = A; docs/PROJECTION.md, "Particle shifting").
     "shift0.05": ["projection.shifting=0.05"],
     "shift0.2": ["projection.shifting=0.2"],

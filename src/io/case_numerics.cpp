@@ -32,7 +32,8 @@ const std::vector<std::pair<std::string, PressureSolver>> kPressureSolvers = {
 const std::vector<std::pair<std::string, PressurePreconditioner>> kPreconditioners = {
     {"jacobi", PressurePreconditioner::jacobi},
     {"block_lu", PressurePreconditioner::block_lu},
-    {"block_ilu0", PressurePreconditioner::block_ilu0}};
+    {"block_ilu0", PressurePreconditioner::block_ilu0},
+    {"two_level", PressurePreconditioner::two_level}};
 const std::vector<std::pair<std::string, CorrectionGradient>> kCorrectionGradients = {
     {"second_order", CorrectionGradient::second_order},
     {"first_order", CorrectionGradient::first_order}};

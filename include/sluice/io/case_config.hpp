@@ -29,7 +29,7 @@ enum class Scheme { wcsph, projection };
 enum class PressureSolver { bicgstab, sor };
 // Preconditioner of the projection scheme's BiCGSTAB (docs/PROJECTION.md, "Preconditioner"):
 // the row scaling alone, or block-Jacobi with an LU or ILU(0) factorisation per cell group.
-enum class PressurePreconditioner { jacobi, block_lu, block_ilu0 };
+enum class PressurePreconditioner { jacobi, block_lu, block_ilu0, two_level };
 // Gradient of the projection scheme's velocity correction (docs/PROJECTION.md, P7).
 enum class CorrectionGradient { second_order, first_order };
 enum class DensityScheme { summation, continuity };

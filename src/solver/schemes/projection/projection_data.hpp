@@ -7,6 +7,7 @@
 #include "sluice/physics/ls_weight.hpp"
 #include "sluice/physics/selected_operators.hpp"
 #include "sluice/solver/block_preconditioner.hpp"
+#include "sluice/solver/coarse_system.hpp"
 #include "sluice/solver/halo_fields.hpp"
 #include "sluice/solver/pressure_solve.hpp"
 #include "sluice/tasks/step_graph.hpp"
@@ -39,20 +40,40 @@ struct ProjectionGroup {
     std::vector<std::int32_t> block_index; // row of the factorised block per particle, or -1
     BlockRows block_rows;                  // the block as assembled (buffers reused)
     Eigen::VectorXd work;
+    // Two-level preconditioner ("two_level"): the rows of A P of this group's particles in
+    // compressed form (columns are aggregates), for the coarse correction's residual.
+    std::vector<int> ap_outer;
+    std::vector<std::int32_t> ap_col;
+    std::vector<double> ap_val;
+};
+
+// The coarse level of the two-level preconditioner (docs/PROJECTION.md, "Preconditioner"),
+// rebuilt every step; its vectors have one entry per aggregate and the same values on every
+// rank.
+struct CoarseLevel {
+    bool active = false;               // this solve applies the coarse correction
+    std::vector<std::int32_t> of;      // per particle (owned and halo): aggregate, or -1
+    std::vector<std::uint64_t> keys;   // the aggregates' keys, sorted (all ranks)
+    std::vector<CoarseEntry> entries;  // this rank's part of A_c, merged
+    CoarseSystem system;               // A_c = R A P, factorised
+    std::vector<double> r, p, s, v, t; // R of BiCGSTAB's vectors (by their recurrences)
+    std::vector<double> e;             // A_c^{-1} R of the vector preconditioned in this run
+    std::vector<double> restricted;    // R of this run's product (v or t), then reduced
 };
 
 // What a solver graph run does (set by the main thread before each run).
 enum class SolverPhase {
-    residual,   // y = x; r = bhat - A y, rhat = r; partials (r,r), (bhat,bhat), and over the
-                // fluid rows sum y, their number, the number of fluid particles on surface rows
-    bicg_dir,   // [x += omega s; r = s - omega t; partial (r,r)]; p = r + beta (p - omega v);
-                // y = p; v = A y; partial (rhat, v) [, sum of y over the fluid rows]
-    bicg_half,  // s = r - alpha v; x += alpha p; y = s; t = A y;
-                // partials (t,s), (t,t), (rhat,s), (rhat,t), (s,s) [, sum of y, fluid rows]
-    sor_sweep,  // y = x; Gauss-Seidel/SOR sweep inside the group, y across groups; partial r^2
-    set_zero,   // x = 0 (the right-hand side vanishes)
-    sor_save,   // s = x (SOR's starting iterate, kept in case the sweep diverges)
-    sor_restore // x = s, y = x
+    residual,    // y = x; r = bhat - A y, rhat = r; partials (r,r), (bhat,bhat), and over the
+                 // fluid rows sum y, their number, the number of fluid particles on surface rows
+    bicg_dir,    // [x += omega s; r = s - omega t; partial (r,r)]; p = r + beta (p - omega v);
+                 // y = p; v = A y; partial (rhat, v) [, sum of y over the fluid rows]
+    bicg_half,   // s = r - alpha v; x += alpha p; y = s; t = A y;
+                 // partials (t,s), (t,t), (rhat,s), (rhat,t), (s,s) [, sum of y, fluid rows]
+    sor_sweep,   // y = x; Gauss-Seidel/SOR sweep inside the group, y across groups; partial r^2
+    set_zero,    // x = 0 (the right-hand side vanishes)
+    sor_save,    // s = x (SOR's starting iterate, kept in case the sweep diverges)
+    sor_restore, // x = s, y = x
+    coarse_mark  // y = 1 on rows that are not Dirichlet rows, 0 on those (for the halo's rows)
 };
 
 template <int D>
@@ -65,6 +86,7 @@ struct ProjectionData {
     std::vector<Real> r, rhat, dir, v, s, t;
 
     std::vector<ProjectionGroup<D>> groups;
+    CoarseLevel coarse;
     // The halo data of the three graphs (the step graph's carries the state).
     std::unique_ptr<HaloFields<D>> main_halo, solver_halo, correct_halo;
     std::unique_ptr<tasks::StepGraph> solver_graph, correct_graph;

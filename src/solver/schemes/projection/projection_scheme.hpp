@@ -47,7 +47,15 @@ private:
     void factor_block(int group); // block-Jacobi preconditioner of the group (after ppe_source)
     void correct_stage(int group);
     std::string solve_pressure(std::string& error); // non-empty: did not converge
-    std::array<double, 7> reduce_partials(int count, bool failed_here);
+    // The groups' partial sums, then the ranks'; with `coarse`, the ranks' restricted vectors
+    // are summed into it as well (in rank order, in the same message).
+    std::array<double, 7> reduce_partials(int count, bool failed_here,
+                                          std::vector<double>* coarse = nullptr);
+    // Two-level preconditioner (two_level.cpp): the aggregates, A P and A_c of this step (after
+    // a coarse_mark run of the solver graph); false where A_c cannot be factorised.
+    bool setup_coarse();
+    // out = R v over this rank's rows (one entry per aggregate).
+    void restrict_owned(const std::vector<Real>& v, std::vector<double>& out) const;
 
     // The units it is lent (step_scheme.hpp).
     const CaseParams<D> case_;

@@ -38,6 +38,15 @@ void ProjectionScheme<D>::solver_stage(int stage, int group) {
         // operator) M is the identity and y is p or s itself.
         const bool solve = d.preconditioned && G.block.ready();
         G.work.resize(static_cast<Eigen::Index>(solve ? G.block.size() : 0));
+        // Two-level (docs/PROJECTION.md, "Two-level"): the coarse correction first, then the
+        // row scaling alone (no block is factorised for "two_level"; a block, were it ready,
+        // would act on the rest): y = P e + M_g^{-1} (z - A P e), e = A_c^{-1} R z (computed
+        // by the main thread).
+        const CoarseLevel& cl = d.coarse;
+        const auto coarse_of = [&](std::uint32_t i) {
+            const std::int32_t c = cl.of[i];
+            return c >= 0 ? Real(cl.e[static_cast<std::size_t>(c)]) : Real(0);
+        };
         for (std::uint32_t i = lo; i < hi; ++i) {
             Real z;
             if (d.phase == SolverPhase::bicg_dir) {
@@ -55,7 +64,18 @@ void ProjectionScheme<D>::solver_stage(int stage, int group) {
                 x[i] += Real(d.alpha) * d.y[i];
                 z = d.s[i];
             }
-            d.y[i] = z; // identity rows outside the factorised block
+            if (cl.active) {
+                const std::uint32_t k = i - lo;
+                double ape = 0;
+                for (int at = G.ap_outer[k]; at < G.ap_outer[k + 1]; ++at) {
+                    const auto c = static_cast<std::size_t>(at);
+                    ape += G.ap_val[c] * cl.e[static_cast<std::size_t>(G.ap_col[c])];
+                }
+                z -= Real(ape);
+                d.y[i] = z + coarse_of(i);
+            } else {
+                d.y[i] = z; // identity rows outside the factorised block
+            }
             if (const std::int32_t b = solve ? G.block_index[i - lo] : -1; b >= 0)
                 G.work[b] = double(z);
         }
@@ -63,7 +83,7 @@ void ProjectionScheme<D>::solver_stage(int stage, int group) {
             G.block.solve(G.work);
             for (std::uint32_t i = lo; i < hi; ++i)
                 if (const std::int32_t b = G.block_index[i - lo]; b >= 0)
-                    d.y[i] = Real(G.work[b]);
+                    d.y[i] = cl.active ? Real(G.work[b]) + coarse_of(i) : Real(G.work[b]);
         }
         return;
     }
@@ -96,13 +116,16 @@ void ProjectionScheme<D>::solver_stage(int stage, int group) {
                 x[i] = d.s[i];
                 d.y[i] = x[i];
                 break;
+            case SolverPhase::coarse_mark:
+                d.y[i] = d.row[i] == PpeRow::surface ? Real(0) : Real(1);
+                break;
             default: // bicg_dir, bicg_half: above
                 break;
             }
         return;
     }
     if (d.phase == SolverPhase::set_zero || d.phase == SolverPhase::sor_save ||
-        d.phase == SolverPhase::sor_restore)
+        d.phase == SolverPhase::sor_restore || d.phase == SolverPhase::coarse_mark)
         return;
     const bool sor = d.phase == SolverPhase::sor_sweep;
     const Real omega = Real(d.relaxation);
@@ -235,13 +258,14 @@ void ProjectionScheme<D>::factor_block(int group) {
         m.val.resize(last + 1);
         m.outer.push_back(static_cast<int>(m.col.size()));
     }
-    G.block.factor(m, case_.cfg.projection.preconditioner == PressurePreconditioner::block_ilu0
-                          ? BlockMethod::ilu0
-                          : BlockMethod::lu);
+    G.block.factor(m, case_.cfg.projection.preconditioner == PressurePreconditioner::block_lu
+                          ? BlockMethod::lu
+                          : BlockMethod::ilu0);
 }
 
 template <int D>
-std::array<double, 7> ProjectionScheme<D>::reduce_partials(int count, bool failed_here) {
+std::array<double, 7> ProjectionScheme<D>::reduce_partials(int count, bool failed_here,
+                                                           std::vector<double>* coarse) {
     // Per group in group order, then across ranks in rank order: every rank gets the same
     // numbers, so every rank takes the same decisions (iterate, stop, fail).
     std::array<double, 7> sum{};
@@ -252,16 +276,25 @@ std::array<double, 7> ProjectionScheme<D>::reduce_partials(int count, bool faile
     if (!rank_.comm.parallel())
         return sum;
     const double t0 = tasks::clock_seconds();
-    const auto all = rank_.comm.all_gather(
-        std::span<const std::byte>(reinterpret_cast<const std::byte*>(sum.data()), sizeof(sum)));
-    rank_.between.push_back({"solver reduce", -1, true, sizeof(sum), t0, tasks::clock_seconds()});
+    const std::size_t extra = coarse != nullptr ? coarse->size() : 0;
+    std::vector<double> mine(sum.begin(), sum.end());
+    if (extra > 0)
+        mine.insert(mine.end(), coarse->begin(), coarse->end());
+    const auto all = rank_.comm.all_gather(std::span<const std::byte>(
+        reinterpret_cast<const std::byte*>(mine.data()), mine.size() * sizeof(double)));
+    rank_.between.push_back(
+        {"solver reduce", -1, true, mine.size() * sizeof(double), t0, tasks::clock_seconds()});
     std::array<double, 7> global{};
+    if (extra > 0)
+        std::fill(coarse->begin(), coarse->end(), 0.0);
+    std::vector<double> part(mine.size());
     for (const auto& b : all) {
-        std::array<double, 7> part{};
-        std::memcpy(part.data(), b.data(), sizeof(part));
+        std::memcpy(part.data(), b.data(), part.size() * sizeof(double));
         for (std::size_t k = 0; k < 6; ++k)
             global[k] += part[k];
         global[6] = std::max(global[6], part[6]);
+        for (std::size_t k = 0; k < extra; ++k)
+            (*coarse)[k] += part[7 + k];
     }
     return global;
 }
@@ -272,6 +305,8 @@ std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
     const ProjectionSettings& ps = case_.cfg.projection;
     const auto t0 = std::chrono::steady_clock::now();
     bool failed = false;
+    CoarseLevel& cl = d.coarse;
+    cl.active = false;
     const auto run = [&](SolverPhase phase, int count) {
         d.phase = phase;
         try {
@@ -281,7 +316,15 @@ std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
                 error = e.what();
             d.failed = true;
         }
-        const auto g = reduce_partials(count, !error.empty());
+        // Two-level: R v or R t, summed with the partials (BiCGSTAB's recurrences then give
+        // R of the next vector to precondition without another run).
+        const bool product = phase == SolverPhase::bicg_dir || phase == SolverPhase::bicg_half;
+        if (cl.active && product)
+            restrict_owned(phase == SolverPhase::bicg_dir ? d.v : d.t, cl.restricted);
+        const auto g =
+            reduce_partials(count, !error.empty(), cl.active && product ? &cl.restricted : nullptr);
+        if (cl.active && product)
+            std::swap(phase == SolverPhase::bicg_dir ? cl.v : cl.t, cl.restricted);
         if (g[6] > 0) {
             d.failed = true;
             failed = true;
@@ -329,6 +372,25 @@ std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
         return "the pressure Poisson system has no free-surface row (a periodic or closed "
                "flow): its pressure level is free, which projection.solver = \"sor\" does not "
                "handle; use projection.solver = \"bicgstab\"";
+    // The coarse level of the two-level preconditioner, for this solve: not with a free level
+    // (A_c would be singular as A is) nor where A_c cannot be factorised (then the solve goes on
+    // with the block ILU(0) alone; the decision is the same on every rank, which all factorise
+    // the same A_c).
+    if (!failed && !converged && bnorm > 0 && !d.free_level &&
+        ps.solver == PressureSolver::bicgstab &&
+        ps.preconditioner == PressurePreconditioner::two_level) {
+        run(SolverPhase::coarse_mark, 0);
+        if (!failed && setup_coarse()) {
+            restrict_owned(d.r, cl.r);
+            reduce_partials(0, false, &cl.r);
+            cl.active = true;
+        }
+    }
+    // e = A_c^{-1} R z for the vector z the next run preconditions.
+    const auto coarse_solve = [&](const std::vector<double>& rz) {
+        cl.e = rz;
+        cl.system.solve(cl.e);
+    };
     int it = 0;
     if (!failed && !converged && ps.solver == PressureSolver::bicgstab) {
         // BiCGSTAB (van der Vorst 1992) on the row-scaled system, i.e. with the Jacobi
@@ -347,6 +409,17 @@ std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
                     e.dir = e.r;
                 }
                 e.y = e.dir;
+            }
+            if (cl.active) { // the same recurrences on the restricted vectors
+                if (d.first_direction) {
+                    cl.p = cl.r;
+                } else {
+                    for (std::size_t k = 0; k < cl.p.size(); ++k) {
+                        cl.r[k] = cl.s[k] - d.omega * cl.t[k];
+                        cl.p[k] = cl.r[k] + d.beta * (cl.p[k] - d.omega * cl.v[k]);
+                    }
+                }
+                coarse_solve(cl.p);
             }
             g = run(SolverPhase::bicg_dir, d.free_level ? 3 : 2);
             if (failed)
@@ -376,6 +449,11 @@ std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
                 e.s = e.r - d.alpha * e.v;
                 e.x += d.alpha * e.dir;
                 e.y = e.s;
+            }
+            if (cl.active) {
+                for (std::size_t k = 0; k < cl.s.size(); ++k)
+                    cl.s[k] = cl.r[k] - d.alpha * cl.v[k];
+                coarse_solve(cl.s);
             }
             g = run(SolverPhase::bicg_half, d.free_level ? 6 : 5);
             if (failed)
@@ -469,7 +547,8 @@ std::string ProjectionScheme<D>::solve_pressure(std::string& error) {
     template void ProjectionScheme<D>::solver_stage(int, int);                                     \
     template void ProjectionScheme<D>::factor_block(int);                                          \
     template std::string ProjectionScheme<D>::solve_pressure(std::string&);                        \
-    template std::array<double, 7> ProjectionScheme<D>::reduce_partials(int, bool);
+    template std::array<double, 7> ProjectionScheme<D>::reduce_partials(int, bool,                 \
+                                                                        std::vector<double>*);
 SLUICE_PROJECTION_SOLVER_MEMBERS(2)
 SLUICE_PROJECTION_SOLVER_MEMBERS(3)
 #undef SLUICE_PROJECTION_SOLVER_MEMBERS

@@ -288,7 +288,8 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
             d.bhat[i] = -src / sum;
         }
     if (stage == 1 && case_.cfg.projection.solver == PressureSolver::bicgstab &&
-        case_.cfg.projection.preconditioner != PressurePreconditioner::jacobi)
+        (case_.cfg.projection.preconditioner == PressurePreconditioner::block_ilu0 ||
+         case_.cfg.projection.preconditioner == PressurePreconditioner::block_lu))
         factor_block(group);
 }
 
