@@ -123,7 +123,7 @@ const KeySpec kKeys[] = {
      "Stop when ‖b̂ − Âp‖₂ ≤ tolerance·‖b̂‖₂ for the row-scaled system (units of pressure; docs/PROJECTION.md, P4); in (0, 1)."},
     {"projection", "max_iterations", "integer", "", "1000", closed(1, 1000000), Applies::projection, "",
      "BiCGSTAB iterations (two operator products each) or SOR sweeps per step; a solve that has not converged by then stops the run with exit code 3 and a message naming the solver, the residual and these keys."},
-    {"projection", "preconditioner", "string", "", "\"jacobi\"", one_of({"jacobi", "block_ilu0", "block_lu", "two_level"}), Applies::projection, "projection.solver = \"bicgstab\"",
+    {"projection", "preconditioner", "string", "", "\"two_level\"", one_of({"jacobi", "block_ilu0", "block_lu", "two_level"}), Applies::projection, "projection.solver = \"bicgstab\"",
      "Preconditioner of BiCGSTAB: \"jacobi\" (the row scaling alone), \"block_ilu0\" (block-Jacobi: ILU(0) of each cell group's diagonal block, couplings to other groups and ranks dropped), \"block_lu\" (the same blocks, exact sparse LU) or \"two_level\" (a coarse-grid correction on aggregates of particles, one per cell of the cell grid, with the Galerkin operator solved exactly on every rank, then the row scaling; without a free surface the row scaling alone); docs/PROJECTION.md, \"Preconditioner\"; only with solver = \"bicgstab\"."},
     {"projection", "relaxation", "number", "", "1.5", open(0, 2), Applies::projection, "projection.solver = \"sor\"",
      "SOR relaxation factor (seed 004: 1.5); in (0, 2); only with solver = \"sor\"."},

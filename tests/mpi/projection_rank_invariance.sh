@@ -26,11 +26,15 @@ compare() { # one three label scale (Pa, or a case file: its rho0 g H)
 
 # "two_level": BiCGSTAB with the two-level preconditioner, whose coarse system every rank
 # gathers and solves (docs/PROJECTION.md, "Preconditioner").
+# "bicgstab": the same solver with the Jacobi (row scaling) preconditioner, named because the
+# default is now "two_level".
 for solver in bicgstab sor two_level; do
     extra=(--set time.end_time=0.05 --set time.output_interval=0.025
            --set runtime.rebalance_every=10)
     if [[ $solver == two_level ]]; then
         extra+=(--set 'projection.solver="bicgstab"' --set 'projection.preconditioner="two_level"')
+    elif [[ $solver == bicgstab ]]; then
+        extra+=(--set 'projection.solver="bicgstab"' --set 'projection.preconditioner="jacobi"')
     else
         extra+=(--set "projection.solver=\"$solver\"")
     fi

@@ -123,7 +123,7 @@ struct ProjectionSettings {
     PressureSolver solver = PressureSolver::bicgstab;
     double tolerance = 1e-8; // relative residual of the row-scaled system
     int max_iterations = 1000;
-    PressurePreconditioner preconditioner = PressurePreconditioner::jacobi;
+    PressurePreconditioner preconditioner = PressurePreconditioner::two_level;
     double relaxation = 1.5; // SOR relaxation factor (seed 004: 1.5)
     double gamma = 0.01;     // relaxation of the density-deviation source term (seed 004: <= 1)
     double surface_diameter_over_dx = 2.1; // Dilts arc circle (seed 004: 2.1 l0)
