@@ -72,4 +72,68 @@ int orientation_sign(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {
     return orientation_sign_expansion(a, b, c);
 }
 
+namespace {
+
+// Adds s * x * y * z exactly to the expansion e[0..n): x y = p + q (fma), then p z and q z
+// split the same way; four doubles in all. Returns the new size.
+int grow_triple_product(double* e, int n, double s, double x, double y, double z) {
+    const double p = x * y;
+    const double q = std::fma(x, y, -p);
+    const double pz = p * z;
+    const double pz_err = std::fma(p, z, -pz);
+    const double qz = q * z;
+    const double qz_err = std::fma(q, z, -qz);
+    n = grow_expansion(e, n, s * pz);
+    n = grow_expansion(e, n, s * pz_err);
+    n = grow_expansion(e, n, s * qz);
+    return grow_expansion(e, n, s * qz_err);
+}
+
+// Adds s * det[u; v; w] (rows: coordinates) exactly: six products of three coordinates.
+int grow_det3(double* e, int n, double s, const Vec<3>& u, const Vec<3>& v, const Vec<3>& w) {
+    n = grow_triple_product(e, n, s, u.x(), v.y(), w.z());
+    n = grow_triple_product(e, n, -s, u.x(), v.z(), w.y());
+    n = grow_triple_product(e, n, -s, u.y(), v.x(), w.z());
+    n = grow_triple_product(e, n, s, u.y(), v.z(), w.x());
+    n = grow_triple_product(e, n, s, u.z(), v.x(), w.y());
+    return grow_triple_product(e, n, -s, u.z(), v.y(), w.x());
+}
+
+} // namespace
+
+int orientation_sign_expansion(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c, const Vec<3>& d) {
+    // ((b - a) x (c - a)) . (d - a) = -det[a 1; b 1; c 1; d 1]
+    //                               = det[b; c; d] - det[a; c; d] + det[a; b; d] - det[a; b; c]
+    // (cofactors along the column of ones), 24 products of three input coordinates.
+    std::array<double, 96> e{};
+    int n = grow_det3(e.data(), 0, 1, b, c, d);
+    n = grow_det3(e.data(), n, -1, a, c, d);
+    n = grow_det3(e.data(), n, 1, a, b, d);
+    n = grow_det3(e.data(), n, -1, a, b, c);
+    return n == 0 ? 0 : sign_of(e[static_cast<std::size_t>(n - 1)]);
+}
+
+int orientation_sign(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c, const Vec<3>& d) {
+    // Shewchuk's orient3d filter on the differences from a: the rounded determinant has the
+    // right sign when its magnitude exceeds (7 + 56 eps) eps times the permanent.
+    const Vec<3> u = b - a;
+    const Vec<3> v = c - a;
+    const Vec<3> w = d - a;
+    const double uv_z = u.x() * v.y();
+    const double vu_z = u.y() * v.x();
+    const double uv_y = u.z() * v.x();
+    const double vu_y = u.x() * v.z();
+    const double uv_x = u.y() * v.z();
+    const double vu_x = u.z() * v.y();
+    const double det = w.x() * (uv_x - vu_x) + w.y() * (uv_y - vu_y) + w.z() * (uv_z - vu_z);
+    const double permanent = std::abs(w.x()) * (std::abs(uv_x) + std::abs(vu_x)) +
+                             std::abs(w.y()) * (std::abs(uv_y) + std::abs(vu_y)) +
+                             std::abs(w.z()) * (std::abs(uv_z) + std::abs(vu_z));
+    constexpr double eps = std::numeric_limits<double>::epsilon() / 2;
+    const double bound = (7 + 56 * eps) * eps * permanent;
+    if (det > bound || -det > bound)
+        return sign_of(det);
+    return orientation_sign_expansion(a, b, c, d);
+}
+
 } // namespace sluice

@@ -26,4 +26,18 @@ namespace sluice {
 // The same decided by the exact expansion alone (no floating-point filter); for tests.
 [[nodiscard]] int orientation_sign_expansion(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c);
 
+// 3-D (issue 22, the hull of convex_hull_3d.hpp): exact sign of
+//
+//   orient(a, b, c, d) = ((b - a) x (c - a)) . (d - a),
+//
+// > 0 when d lies on the side of the plane abc into which (b - a) x (c - a) points (abc turn
+// counter-clockwise seen from d); 0: coplanar. The opposite sign of Shewchuk's orient3d. Same
+// method as in 2-D: the determinant in input coordinates is 24 products of three coordinates,
+// each split exactly into four doubles (two fused multiply-adds per factor), summed into an
+// expansion; Shewchuk's orient3d error bound answers first.
+[[nodiscard]] int orientation_sign(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c,
+                                   const Vec<3>& d);
+[[nodiscard]] int orientation_sign_expansion(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c,
+                                             const Vec<3>& d);
+
 } // namespace sluice
