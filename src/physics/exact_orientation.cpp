@@ -59,19 +59,6 @@ int orientation_sign_expansion(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c
     return n == 0 ? 0 : sign_of(e[static_cast<std::size_t>(n - 1)]);
 }
 
-int orientation_sign(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {
-    // Shewchuk's orient2d filter: the rounded determinant has the right sign when its
-    // magnitude exceeds (3 + 16 eps) eps (|detleft| + |detright|), eps = 2^-53.
-    const double detleft = (a.x() - c.x()) * (b.y() - c.y());
-    const double detright = (a.y() - c.y()) * (b.x() - c.x());
-    const double det = detleft - detright;
-    constexpr double eps = std::numeric_limits<double>::epsilon() / 2;
-    const double bound = (3 + 16 * eps) * eps * (std::abs(detleft) + std::abs(detright));
-    if (det > bound || -det > bound)
-        return sign_of(det);
-    return orientation_sign_expansion(a, b, c);
-}
-
 namespace {
 
 // Adds s * x * y * z exactly to the expansion e[0..n): x y = p + q (fma), then p z and q z
@@ -111,29 +98,6 @@ int orientation_sign_expansion(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c
     n = grow_det3(e.data(), n, 1, a, b, d);
     n = grow_det3(e.data(), n, -1, a, b, c);
     return n == 0 ? 0 : sign_of(e[static_cast<std::size_t>(n - 1)]);
-}
-
-int orientation_sign(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c, const Vec<3>& d) {
-    // Shewchuk's orient3d filter on the differences from a: the rounded determinant has the
-    // right sign when its magnitude exceeds (7 + 56 eps) eps times the permanent.
-    const Vec<3> u = b - a;
-    const Vec<3> v = c - a;
-    const Vec<3> w = d - a;
-    const double uv_z = u.x() * v.y();
-    const double vu_z = u.y() * v.x();
-    const double uv_y = u.z() * v.x();
-    const double vu_y = u.x() * v.z();
-    const double uv_x = u.y() * v.z();
-    const double vu_x = u.z() * v.y();
-    const double det = w.x() * (uv_x - vu_x) + w.y() * (uv_y - vu_y) + w.z() * (uv_z - vu_z);
-    const double permanent = std::abs(w.x()) * (std::abs(uv_x) + std::abs(vu_x)) +
-                             std::abs(w.y()) * (std::abs(uv_y) + std::abs(vu_y)) +
-                             std::abs(w.z()) * (std::abs(uv_z) + std::abs(vu_z));
-    constexpr double eps = std::numeric_limits<double>::epsilon() / 2;
-    const double bound = (7 + 56 * eps) * eps * permanent;
-    if (det > bound || -det > bound)
-        return sign_of(det);
-    return orientation_sign_expansion(a, b, c, d);
 }
 
 } // namespace sluice

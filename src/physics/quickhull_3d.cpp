@@ -13,6 +13,13 @@ namespace {
 
 using Facet = QuickhullWork::Facet;
 
+// A triangle whose corners are collinear to within rounding (twice its area below this
+// fraction of its longest edge squared: an eye barely above a visible facet, next to one of
+// its edges, as near-lattice images give) has no reliable plane: its rounded normal can point
+// anywhere. It stays in the exact triangulation but is left out of the facets returned (it
+// covers no area: its neighbours' planes pass through it), as Qhull merges it away.
+constexpr Real kSliver = Real(1e-10);
+
 struct Hull {
     std::span<const Vec<3>> p;
     QuickhullWork& w;
@@ -35,6 +42,15 @@ struct Hull {
         F.d = -F.n.dot(at(a));
         w.facets.push_back(F);
         return static_cast<int>(w.facets.size()) - 1;
+    }
+
+    bool sliver(const Facet& F) const {
+        const Vec<3>& a = at(F.v[0]);
+        const Vec<3>& b = at(F.v[1]);
+        const Vec<3>& c = at(F.v[2]);
+        const Real longest =
+            std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()});
+        return !((b - a).cross(c - a).norm() > kSliver * longest);
     }
 
     // Puts point q in the outside set of the first facet in [first, last) it lies more than
@@ -275,7 +291,7 @@ bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork
             corners.push_back(v);
     std::sort(corners.begin(), corners.end());
     for (const Facet& F : work.facets)
-        if (F.alive)
+        if (F.alive && !H.sliver(F))
             facets.emplace_back(F.n.x(), F.n.y(), F.n.z(), F.d);
     return true;
 }

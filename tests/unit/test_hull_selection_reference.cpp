@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <string>
 
@@ -36,12 +37,16 @@ std::vector<NeighbourSelection> hull_policies() {
 
 // Every policy, through the reusing form (one scratch for the whole test, as a task holds
 // one) and the allocating one, against the old selection; the mapped hull as well.
+// `corners_too` false: the corners-only policies (hull_boundary = false) are not compared
+// (3-D sets within Qhull's rounding band of a lattice, see below).
 template <int D>
 void check_same(const std::vector<Vec<D>>& r, Real dx, NeighbourSelectionScratch<D>& scratch,
-                const std::string& what, int& compared) {
+                const std::string& what, int& compared, bool corners_too = true) {
     const Real support = Real(3.1) * dx;
     std::vector<int> into;
     for (const NeighbourSelection& s : hull_policies()) {
+        if (!corners_too && !s.hull_boundary)
+            continue;
         const std::vector<int> old = old_select_neighbours<D>(r, support, dx, s);
         select_neighbours_into<D>(r, support, dx, s, scratch, into);
         INFO(what << ", candidate radius " << s.candidate_radius_over_dx << " dx, boundary "
@@ -58,7 +63,8 @@ void check_same(const std::vector<Vec<D>>& r, Real dx, NeighbourSelectionScratch
         const MappedHull<D> a = old_mapped_hull<D>(nonzero, prefilter);
         const MappedHull<D> b = mapped_hull<D>(nonzero, prefilter);
         INFO(what << ", mapped hull, prefilter " << (prefilter == HullPrefilter::none));
-        REQUIRE(b.vertices == a.vertices);
+        if (corners_too)
+            REQUIRE(b.vertices == a.vertices);
         REQUIRE(b.boundary == a.boundary);
         REQUIRE(hull_surrounds_origin(b) == old_hull_surrounds_origin(a));
     }
@@ -118,6 +124,13 @@ void run_families(int& compared) {
         check_same<D>(r, dx, scratch, "random #" + std::to_string(t), compared);
     }
     // Jittered lattices, strong to rounding-level jitter, and exact ones at several origins.
+    // In 3-D a lattice displaced by 1e-15 to 1e-11 dx puts points within Qhull's rounding band
+    // of a facet (about 5e-15 of the set's size, with its merging of nearly coplanar facets):
+    // whether such a point is a corner then depends on each hull's insertion order, and the
+    // old and new corners differ in 23 % of the sets at 1e-14 dx, 0.08 % at 1e-11 dx (none at
+    // 1e-9 dx and beyond, none on exact lattices; perf/convex_hull/README.md). Every such point
+    // lies on the boundary (within 1e-9 of a facet), so the boundary policies, the solver's
+    // default, still agree and are compared there.
     int t = 0;
     for (Real jitter : {0.2, 0.05, 1e-3, 1e-6, 1e-9, 1e-12, 1e-14, 0.0})
         for (Real x0 : {0.0, 0.37, 1.0, 12.3})
@@ -125,7 +138,7 @@ void run_families(int& compared) {
                 check_same<D>(lattice_offsets<D>(dx, jitter, 3, rng, x0), dx, scratch,
                               "lattice, jitter " + std::to_string(jitter) + " #" +
                                   std::to_string(t),
-                              compared);
+                              compared, D == 2 || jitter == 0 || jitter > 1e-10);
     // Half lattices (a free surface), a particle alone, a line, duplicates.
     for (Real jitter : {0.2, 1e-9, 0.0}) {
         auto r = lattice_offsets<D>(dx, jitter, 3, rng, 0.5);
@@ -167,4 +180,25 @@ TEST_CASE("3-D selection: same neighbours, same order as the old implementation 
     int compared = 0;
     run_families<3>(compared);
     MESSAGE(compared << " 3-D selections compared");
+}
+
+TEST_CASE("3-D selection: a particle of the 3-D projection dam break whose hull has a sliver") {
+    // Offsets of fluid particle 1903 at t = 0.03 s of a 3-D projection dam break (dx = 0.02,
+    // perf/convex_hull/README.md): an eye barely above a visible facet, next to one of its
+    // edges, makes a cone triangle whose corners are collinear to rounding. Its rounded plane
+    // had points 41 (of 57) above it and five extra boundary points came out, until such
+    // slivers were left out of the facets (quickhull_3d.cpp).
+    std::ifstream in(SLUICE_SOURCE_DIR "/tests/data/hull_sliver_offsets_3d.txt");
+    std::vector<Vec<3>> r;
+    Real x = 0, y = 0, z = 0;
+    while (in >> x >> y >> z)
+        r.emplace_back(x, y, z);
+    REQUIRE(r.size() == 108);
+    NeighbourSelectionScratch<3> scratch;
+    int compared = 0;
+    check_same<3>(r, 0.02, scratch, "dam break sliver", compared);
+    const MappedHull<3> h = mapped_hull<3>(r);
+    for (const auto& f : h.facets)
+        for (const auto& q : h.images)
+            REQUIRE(f.head<3>().dot(q) + f[3] <= 1e-12 * h.size);
 }

@@ -7,7 +7,7 @@
 // which keeps its direction and inverts its distance, so the nearest particle in each
 // direction lands farthest out and becomes a vertex of the convex hull of the images.
 // MappedHull is that hull in D = 2 (Lee & Lee's quadrant + Sklansky algorithm) or D = 3
-// (Qhull), with its facets for inside/outside tests.
+// (the exact quickhull of quickhull_3d.hpp), with its facets for inside/outside tests.
 #include "sluice/core/types.hpp"
 #include "sluice/physics/convex_hull_2d.hpp"
 #include "sluice/physics/convex_hull_3d.hpp"
