@@ -249,8 +249,8 @@ std::vector<int> old_monotone_chain_hull_2d(std::span<const Vec<2>> points, Hull
     return hull;
 }
 
-std::vector<Eigen::Matrix<Real, 3, 1>> old_hull_edges_2d(std::span<const Vec<2>> points,
-                                                     const std::vector<int>& clockwise_corners) {
+std::vector<Eigen::Matrix<Real, 3, 1>>
+old_hull_edges_2d(std::span<const Vec<2>> points, const std::vector<int>& clockwise_corners) {
     std::vector<Eigen::Matrix<Real, 3, 1>> edges;
     const std::size_t n = clockwise_corners.size();
     if (n < 3)
@@ -264,7 +264,6 @@ std::vector<Eigen::Matrix<Real, 3, 1>> old_hull_edges_2d(std::span<const Vec<2>>
     }
     return edges;
 }
-
 
 // ---- src/physics/old_convex_hull_3d.cpp at 0f22f9e ----
 
@@ -439,9 +438,7 @@ ConvexHull3d old_convex_hull_3d(std::span<const Vec<3>> points, HullPoints which
     return hull;
 }
 
-
 // ---- src/physics/old_mapped_hull.cpp at 0f22f9e ----
-
 
 namespace {
 
@@ -509,7 +506,8 @@ Real old_inscribed_ball_radius(std::span<const Vec<D>> images) {
 }
 
 template <int D>
-void old_mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter, MappedHull<D>& h) {
+void old_mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
+                          MappedHull<D>& h) {
     h.images.clear();
     h.vertices.clear();
     h.boundary.clear();
@@ -615,13 +613,11 @@ template Real old_inscribed_ball_radius<3>(std::span<const Vec<3>>);
 template bool old_hull_surrounds_origin<2>(const MappedHull<2>&);
 template bool old_hull_surrounds_origin<3>(const MappedHull<3>&);
 
-
 // ---- src/physics/neighbour_selection.cpp at 0f22f9e ----
-
 
 template <int D>
 std::vector<int> old_select_neighbours(std::span<const Vec<D>> offsets, Real support, Real dx,
-                                   const NeighbourSelection& selection) {
+                                       const NeighbourSelection& selection) {
     std::vector<int> out;
     const auto add_radius_set = [&] {
         const Real s2 = support * support;
@@ -658,9 +654,8 @@ std::vector<int> old_select_neighbours(std::span<const Vec<D>> offsets, Real sup
 }
 
 template std::vector<int> old_select_neighbours<2>(std::span<const Vec<2>>, Real, Real,
-                                               const NeighbourSelection&);
+                                                   const NeighbourSelection&);
 template std::vector<int> old_select_neighbours<3>(std::span<const Vec<3>>, Real, Real,
-                                               const NeighbourSelection&);
-
+                                                   const NeighbourSelection&);
 
 } // namespace sluice::hull_reference
