@@ -3,9 +3,10 @@
 // own cell grid; per particle we time
 //   search  : the radius search over the adjacent cells (Neighbourhood::for_each_neighbour),
 //             gathering the offsets within the candidate radius 3.1 dx;
-//   radius  : select_neighbours with the radius policy on those offsets (support 3.1 dx);
-//   hull    : select_neighbours with the convex-hull policy (vertices + boundary points):
-//             inverse-square map + Lee & Lee's quadrant hull (2-D) or Qhull (3-D);
+//   radius  : select_neighbours_into with the radius policy on those offsets (support 3.1 dx);
+//   hull    : select_neighbours_into with the convex-hull policy (vertices + boundary points):
+//             inverse-square map + Lee & Lee's quadrant hull (2-D) or the exact quickhull (3-D),
+//             one scratch reused particle after particle as the solver does;
 //   andrew  : (2-D) the same images through Andrew's monotone chain, for comparison.
 // Each figure is the best of 5 repetitions in processor time (the machine is shared). Usage:
 //   bench_hull_selection [particles per axis in 2-D = 100] [per axis in 3-D = 20]
@@ -101,6 +102,13 @@ void run(int per_axis) {
     for (std::uint32_t i = 0; i < n; ++i)
         gather(i, offsets[i]);
 
+    // The solver's form (selected_operators.cpp): one scratch, reused particle after particle.
+    NeighbourSelectionScratch<D> selection_scratch;
+    std::vector<int> picked;
+    const auto select = [&](std::size_t i, const NeighbourSelection& s) {
+        select_neighbours_into<D>(offsets[i], rc, dx, s, selection_scratch, picked);
+        return picked.size();
+    };
     NeighbourSelection radius;
     NeighbourSelection hull;
     hull.policy = NeighbourPolicy::convex_hull;
@@ -109,18 +117,18 @@ void run(int per_axis) {
     const double t_radius = seconds_best_of_5([&] {
         n_radius = 0;
         for (std::size_t i = 0; i < n; ++i)
-            n_radius += select_neighbours<D>(offsets[i], rc, dx, radius).size();
+            n_radius += select(i, radius);
     });
     const double t_hull = seconds_best_of_5([&] {
         n_hull = 0;
         for (std::size_t i = 0; i < n; ++i)
-            n_hull += select_neighbours<D>(offsets[i], rc, dx, hull).size();
+            n_hull += select(i, hull);
     });
     hull.hull_boundary = false;
     const double t_vertices = seconds_best_of_5([&] {
         n_vertices = 0;
         for (std::size_t i = 0; i < n; ++i)
-            n_vertices += select_neighbours<D>(offsets[i], rc, dx, hull).size();
+            n_vertices += select(i, hull);
     });
     const double per = 1e9 / static_cast<double>(n);
     std::printf("%d-D, %zu particles (jittered lattice, 20 %% of dx), candidates within 3.1 dx\n",

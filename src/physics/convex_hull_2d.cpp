@@ -32,6 +32,24 @@ void distinct_sorted_into(std::span<const Vec<2>> p, std::vector<int>& idx) {
     idx.erase(std::unique(idx.begin(), idx.end(), same), idx.end());
 }
 
+// Indices of the distinct points in ascending order; of equal points the lowest index stays.
+// The quadrant hull's decisions do not depend on the order of its input (the extreme points'
+// ties are broken by coordinates, the regions sorted by them), so small sets skip the sort.
+void distinct_into(std::span<const Vec<2>> p, std::vector<int>& idx) {
+    if (p.size() > 32) {
+        distinct_sorted_into(p, idx);
+        return;
+    }
+    idx.clear();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        bool repeat = false;
+        for (std::size_t j = 0; j < i && !repeat; ++j)
+            repeat = p[j] == p[i];
+        if (!repeat)
+            idx.push_back(static_cast<int>(i));
+    }
+}
+
 std::vector<int> distinct_sorted(std::span<const Vec<2>> p) {
     std::vector<int> idx;
     distinct_sorted_into(p, idx);
@@ -84,13 +102,12 @@ int extreme_point(std::span<const Vec<2>> p, const std::vector<int>& idx, int k)
 // point (1, 0) lies in the boxes of both B and D, enters the polygon twice, and the scan then
 // deletes real vertices. Beyond its own chord, a point lies in one region only.
 void append_region_chain(std::span<const Vec<2>> p, const std::vector<int>& idx, int start, int end,
-                         int k, std::vector<int>& polygon) {
+                         int k, std::vector<std::pair<Vec<2>, int>>& region,
+                         std::vector<int>& polygon) {
     const Vec<2>& s0 = p[static_cast<std::size_t>(start)];
     const Vec<2>& e0 = p[static_cast<std::size_t>(end)];
     const Vec<2> s = rotated(s0, k);
     const Vec<2> e = rotated(e0, k);
-    // Reused between calls (the hull runs once per particle and step).
-    thread_local std::vector<std::pair<Vec<2>, int>> region;
     region.clear();
     for (int i : idx) {
         const Vec<2> q = rotated(p[static_cast<std::size_t>(i)], k);
@@ -132,9 +149,9 @@ void merge_repeats(std::vector<int>& polygon) {
 // (0, 10), (1, 9.5), (2, 8.5), (10, 8), (11, 0) (tests/unit/test_convex_hull_2d.cpp). The
 // first point, P1, is a hull vertex and closes the scan ("one point more than the polygon").
 // Collinear turns (P == 0) are deleted: only corners remain.
-std::vector<int> sklansky_scan(std::span<const Vec<2>> p, const std::vector<int>& polygon) {
-    std::vector<int> hull;
-    hull.reserve(polygon.size() + 1);
+void sklansky_scan(std::span<const Vec<2>> p, const std::vector<int>& polygon,
+                   std::vector<int>& hull) {
+    hull.clear();
     const auto at = [&](int i) -> const Vec<2>& { return p[static_cast<std::size_t>(i)]; };
     for (std::size_t n = 0; n <= polygon.size(); ++n) {
         const int q = polygon[n % polygon.size()];
@@ -144,7 +161,6 @@ std::vector<int> sklansky_scan(std::span<const Vec<2>> p, const std::vector<int>
         hull.push_back(q);
     }
     hull.pop_back(); // P1 again
-    return hull;
 }
 
 // True when q lies on the closed segment [a, b] (exact).
@@ -154,23 +170,28 @@ bool on_segment(const Vec<2>& a, const Vec<2>& b, const Vec<2>& q) {
            q.y() <= std::max(a.y(), b.y());
 }
 
-// Corners -> corners plus the points on their edges, in the order of the corners.
-std::vector<int> add_edge_points(std::span<const Vec<2>> p, const std::vector<int>& distinct,
-                                 const std::vector<int>& corners) {
-    if (corners.size() < 2)
-        return corners;
+// Corners -> corners plus the points on their edges, in the order of the corners, into out.
+void add_edge_points(std::span<const Vec<2>> p, const std::vector<int>& distinct,
+                     const std::vector<int>& corners, QuadrantHullWork& work,
+                     std::vector<int>& out) {
+    out.clear();
+    if (corners.size() < 2) {
+        out.assign(corners.begin(), corners.end());
+        return;
+    }
     const auto at = [&](int i) -> const Vec<2>& { return p[static_cast<std::size_t>(i)]; };
-    std::vector<char> is_corner(p.size(), 0);
+    std::vector<char>& is_corner = work.is_corner;
+    is_corner.assign(p.size(), 0);
     for (int c : corners)
         is_corner[static_cast<std::size_t>(c)] = 1;
     // A 2-corner hull is a segment: walk it once, not there and back.
     const std::size_t edges = corners.size() == 2 ? 1 : corners.size();
-    std::vector<int> out;
+    std::vector<int>& on_edge = work.on_edge;
     for (std::size_t k = 0; k < edges; ++k) {
         const int a = corners[k];
         const int b = corners[(k + 1) % corners.size()];
         out.push_back(a);
-        std::vector<int> on_edge;
+        on_edge.clear();
         for (int i : distinct)
             if (is_corner[static_cast<std::size_t>(i)] == 0 && on_segment(at(a), at(b), at(i)))
                 on_edge.push_back(i);
@@ -185,27 +206,41 @@ std::vector<int> add_edge_points(std::span<const Vec<2>> p, const std::vector<in
     }
     if (corners.size() == 2)
         out.push_back(corners[1]);
-    return out;
 }
 
 } // namespace
 
-std::vector<int> quadrant_hull_2d(std::span<const Vec<2>> points, HullPoints which) {
-    thread_local std::vector<int> idx;
-    distinct_sorted_into(points, idx);
+void quadrant_hull_2d_into(std::span<const Vec<2>> points, HullPoints which, QuadrantHullWork& work,
+                           std::vector<int>& out) {
+    out.clear();
+    std::vector<int>& idx = work.distinct;
+    distinct_into(points, idx);
     if (idx.empty())
-        return {};
+        return;
     std::array<int, 4> extreme{};
     for (int k = 0; k < 4; ++k)
         extreme[static_cast<std::size_t>(k)] = extreme_point(points, idx, k);
-    thread_local std::vector<int> polygon;
+    std::vector<int>& polygon = work.polygon;
     polygon.clear();
     for (int k = 0; k < 4; ++k)
         append_region_chain(points, idx, extreme[static_cast<std::size_t>(k)],
-                            extreme[static_cast<std::size_t>((k + 1) & 3)], k, polygon);
+                            extreme[static_cast<std::size_t>((k + 1) & 3)], k, work.region,
+                            polygon);
     merge_repeats(polygon);
-    std::vector<int> corners = polygon.size() <= 2 ? polygon : sklansky_scan(points, polygon);
-    return which == HullPoints::vertices ? corners : add_edge_points(points, idx, corners);
+    std::vector<int>& corners = which == HullPoints::vertices ? out : work.corners;
+    if (polygon.size() <= 2)
+        corners.assign(polygon.begin(), polygon.end());
+    else
+        sklansky_scan(points, polygon, corners);
+    if (which == HullPoints::boundary)
+        add_edge_points(points, idx, corners, work, out);
+}
+
+std::vector<int> quadrant_hull_2d(std::span<const Vec<2>> points, HullPoints which) {
+    QuadrantHullWork work;
+    std::vector<int> out;
+    quadrant_hull_2d_into(points, which, work, out);
+    return out;
 }
 
 std::vector<int> monotone_chain_hull_2d(std::span<const Vec<2>> points, HullPoints which) {
@@ -236,12 +271,12 @@ std::vector<int> monotone_chain_hull_2d(std::span<const Vec<2>> points, HullPoin
     return hull;
 }
 
-std::vector<Eigen::Matrix<Real, 3, 1>> hull_edges_2d(std::span<const Vec<2>> points,
-                                                     const std::vector<int>& clockwise_corners) {
-    std::vector<Eigen::Matrix<Real, 3, 1>> edges;
+void hull_edges_2d_into(std::span<const Vec<2>> points, const std::vector<int>& clockwise_corners,
+                        std::vector<Eigen::Matrix<Real, 3, 1>>& edges) {
+    edges.clear();
     const std::size_t n = clockwise_corners.size();
     if (n < 3)
-        return edges;
+        return;
     for (std::size_t k = 0; k < n; ++k) {
         const Vec<2>& a = points[static_cast<std::size_t>(clockwise_corners[k])];
         const Vec<2>& b = points[static_cast<std::size_t>(clockwise_corners[(k + 1) % n])];
@@ -249,6 +284,12 @@ std::vector<Eigen::Matrix<Real, 3, 1>> hull_edges_2d(std::span<const Vec<2>> poi
         const Vec<2> normal(-t.y(), t.x()); // left of a -> b: outside for a clockwise hull
         edges.emplace_back(normal.x(), normal.y(), -normal.dot(a));
     }
+}
+
+std::vector<Eigen::Matrix<Real, 3, 1>> hull_edges_2d(std::span<const Vec<2>> points,
+                                                     const std::vector<int>& clockwise_corners) {
+    std::vector<Eigen::Matrix<Real, 3, 1>> edges;
+    hull_edges_2d_into(points, clockwise_corners, edges);
     return edges;
 }
 

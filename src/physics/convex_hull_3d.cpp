@@ -1,15 +1,13 @@
-// 3-D convex hull through Qhull's reentrant C library; see convex_hull_3d.hpp.
+// 3-D convex hull: the exact quickhull, degenerate sets by their dimension; see convex_hull_3d.hpp.
 #include "sluice/physics/convex_hull_3d.hpp"
+
+#include "sluice/physics/quickhull_3d.hpp"
 
 #include <Eigen/SVD>
 
-extern "C" {
-#include <libqhull_r/libqhull_r.h>
-}
-
 #include <algorithm>
 #include <array>
-#include <cstdio>
+#include <cmath>
 #include <numeric>
 
 namespace sluice {
@@ -32,78 +30,66 @@ std::vector<int> distinct_points(std::span<const Vec<3>> p) {
     return idx;
 }
 
-// Qhull's messages on precision trouble go nowhere: the caller gets the exit code.
-std::FILE* quiet_stream() {
-    static std::FILE* f = std::fopen("/dev/null", "w");
-    return f;
+// Adds to the corners the distinct points within kBoundaryTolerance of the set's size (largest
+// distance from the centroid) of a facet.
+void add_facet_points(std::span<const Vec<3>> points, const std::vector<int>& idx,
+                      ConvexHull3d& hull) {
+    const auto at = [&](int i) -> const Vec<3>& { return points[static_cast<std::size_t>(i)]; };
+    Vec<3> centre = Vec<3>::Zero();
+    for (int i : idx)
+        centre += at(i);
+    centre /= static_cast<Real>(idx.size());
+    Real size = 0;
+    for (int i : idx)
+        size = std::max(size, (at(i) - centre).norm());
+    const Real tol = kBoundaryTolerance * size;
+    std::vector<char> in(points.size(), 0);
+    for (int i : hull.points)
+        in[static_cast<std::size_t>(i)] = 1;
+    for (int i : idx) {
+        if (in[static_cast<std::size_t>(i)] != 0)
+            continue;
+        for (const auto& f : hull.facets)
+            if (f.head<3>().dot(at(i)) + f[3] > -tol) {
+                hull.points.push_back(i);
+                break;
+            }
+    }
 }
 
-// One Qhull instance per thread, reused from call to call (issue 22): qh_freeqhull(!qh_ALL)
-// keeps Qhull's short-memory pools, so a call after the first skips their set-up and most of
-// its allocations. Calls in different threads never share it.
-class QhullInstance {
-public:
-    QhullInstance() { qh_zero(&qh_, quiet_stream()); }
-    ~QhullInstance() { release(); }
-    // After a refused input Qhull's state is not trusted again: everything goes, a fresh one
-    // starts.
-    void reset() {
-        release();
-        qh_zero(&qh_, quiet_stream());
-    }
-    QhullInstance(const QhullInstance&) = delete;
-    QhullInstance& operator=(const QhullInstance&) = delete;
-    qhT* get() { return &qh_; }
-
-private:
-    void release() {
-        qh_freeqhull(&qh_, qh_ALL);
-        int still_long = 0;
-        int total_long = 0;
-        qh_memfreeshort(&qh_, &still_long, &total_long);
-    }
-    qhT qh_{};
-};
-
-// Runs Qhull on the distinct points; false when it refuses them.
-bool run_qhull(std::span<const Vec<3>> p, const std::vector<int>& idx, const char* options,
-               ConvexHull3d& out) {
-    thread_local std::vector<coordT> coords;
-    coords.clear();
-    for (int i : idx)
-        for (int a = 0; a < 3; ++a)
-            coords.push_back(p[static_cast<std::size_t>(i)][a]);
-    thread_local QhullInstance instance;
-    qhT* qh = instance.get();
-    std::array<char, 64> command{};
-    std::snprintf(command.data(), command.size(), "qhull %s", options);
-    const int exit_code = qh_new_qhull(qh, 3, static_cast<int>(idx.size()), coords.data(), False,
-                                       command.data(), nullptr, quiet_stream());
-    if (exit_code == 0) {
-        vertexT* vertex = nullptr;
-        FORALLvertices {
-            out.points.push_back(idx[static_cast<std::size_t>(qh_pointid(qh, vertex->point))]);
-        }
-        facetT* facet = nullptr;
-        FORALLfacets {
-            out.facets.emplace_back(facet->normal[0], facet->normal[1], facet->normal[2],
-                                    facet->offset);
-        }
-    }
-    // The hull's memory goes back to the pools, which stay for the next call.
-    qh_freeqhull(qh, !qh_ALL);
-    if (exit_code != 0)
-        instance.reset();
-    return exit_code == 0;
+// A first tetrahedron with more than this volume proves what the singular values below would
+// say, dimension 3: it is at least V / D^2 wide in every direction (D: the set's diameter,
+// at most 2 max |p|), so sigma_3 >= V / (sqrt(2) D^2), while sigma_1 <= sqrt(n) D; the
+// factor 100 covers the rounding of both.
+Real clearly_3d_volume(std::span<const Vec<3>> points) {
+    Real size2 = 0;
+    for (const auto& q : points)
+        size2 = std::max(size2, q.squaredNorm());
+    const Real size = std::sqrt(size2);
+    const Real diameter = 2 * size;
+    return 100 * kRankTolerance * std::sqrt(static_cast<Real>(points.size())) * std::sqrt(Real(2)) *
+           diameter * diameter * diameter;
 }
 
 } // namespace
 
-ConvexHull3d convex_hull_3d(std::span<const Vec<3>> points, HullPoints which) {
-    ConvexHull3d hull;
+void convex_hull_3d_into(std::span<const Vec<3>> points, HullPoints which, QuickhullWork& work,
+                         ConvexHull3d& hull) {
+    hull.points.clear();
+    hull.facets.clear();
+    hull.dimension = -1;
+    // The usual case (issue 22): a solid set, its hull without sorting or decomposing it.
+    if (points.size() >= 4 &&
+        quickhull_3d(points, clearly_3d_volume(points), work, hull.points, hull.facets)) {
+        hull.dimension = 3;
+        if (which == HullPoints::boundary)
+            add_facet_points(points, distinct_points(points), hull);
+        std::sort(hull.points.begin(), hull.points.end());
+        return;
+    }
     const std::vector<int> idx = distinct_points(points);
     if (idx.empty())
-        return hull;
+        return;
     const auto at = [&](int i) -> const Vec<3>& { return points[static_cast<std::size_t>(i)]; };
 
     Vec<3> centre = Vec<3>::Zero();
@@ -154,33 +140,20 @@ ConvexHull3d convex_hull_3d(std::span<const Vec<3>> points, HullPoints which) {
                 hull.points.push_back(idx[static_cast<std::size_t>(k)]);
         }
     } else {
-        if (!run_qhull(points, idx, "", hull)) {
-            // Nearly flat sets can still trouble Qhull's precision checks: joggle the input
-            // (deterministic seed) rather than fail.
-            hull.points.clear();
-            hull.facets.clear();
-            run_qhull(points, idx, "QJ", hull);
-        }
-        if (which == HullPoints::boundary) {
-            Real size = 0;
-            for (int i : idx)
-                size = std::max(size, (at(i) - centre).norm());
-            const Real tol = kBoundaryTolerance * size;
-            std::vector<char> in(points.size(), 0);
-            for (int i : hull.points)
-                in[static_cast<std::size_t>(i)] = 1;
-            for (int i : idx) {
-                if (in[static_cast<std::size_t>(i)] != 0)
-                    continue;
-                for (const auto& f : hull.facets)
-                    if (f.head<3>().dot(at(i)) + f[3] > -tol) {
-                        hull.points.push_back(i);
-                        break;
-                    }
-            }
+        // Thin but solid (the first tetrahedron was too flat to prove it): any positive volume.
+        if (!quickhull_3d(points, 0, work, hull.points, hull.facets)) {
+            hull.points = idx; // unreachable: sigma_3 > 0 means four points off one plane
+        } else if (which == HullPoints::boundary) {
+            add_facet_points(points, idx, hull);
         }
     }
     std::sort(hull.points.begin(), hull.points.end());
+}
+
+ConvexHull3d convex_hull_3d(std::span<const Vec<3>> points, HullPoints which) {
+    ConvexHull3d hull;
+    QuickhullWork work;
+    convex_hull_3d_into(points, which, work, hull);
     return hull;
 }
 

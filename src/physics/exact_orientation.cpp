@@ -59,17 +59,45 @@ int orientation_sign_expansion(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c
     return n == 0 ? 0 : sign_of(e[static_cast<std::size_t>(n - 1)]);
 }
 
-int orientation_sign(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {
-    // Shewchuk's orient2d filter: the rounded determinant has the right sign when its
-    // magnitude exceeds (3 + 16 eps) eps (|detleft| + |detright|), eps = 2^-53.
-    const double detleft = (a.x() - c.x()) * (b.y() - c.y());
-    const double detright = (a.y() - c.y()) * (b.x() - c.x());
-    const double det = detleft - detright;
-    constexpr double eps = std::numeric_limits<double>::epsilon() / 2;
-    const double bound = (3 + 16 * eps) * eps * (std::abs(detleft) + std::abs(detright));
-    if (det > bound || -det > bound)
-        return sign_of(det);
-    return orientation_sign_expansion(a, b, c);
+namespace {
+
+// Adds s * x * y * z exactly to the expansion e[0..n): x y = p + q (fma), then p z and q z
+// split the same way; four doubles in all. Returns the new size.
+int grow_triple_product(double* e, int n, double s, double x, double y, double z) {
+    const double p = x * y;
+    const double q = std::fma(x, y, -p);
+    const double pz = p * z;
+    const double pz_err = std::fma(p, z, -pz);
+    const double qz = q * z;
+    const double qz_err = std::fma(q, z, -qz);
+    n = grow_expansion(e, n, s * pz);
+    n = grow_expansion(e, n, s * pz_err);
+    n = grow_expansion(e, n, s * qz);
+    return grow_expansion(e, n, s * qz_err);
+}
+
+// Adds s * det[u; v; w] (rows: coordinates) exactly: six products of three coordinates.
+int grow_det3(double* e, int n, double s, const Vec<3>& u, const Vec<3>& v, const Vec<3>& w) {
+    n = grow_triple_product(e, n, s, u.x(), v.y(), w.z());
+    n = grow_triple_product(e, n, -s, u.x(), v.z(), w.y());
+    n = grow_triple_product(e, n, -s, u.y(), v.x(), w.z());
+    n = grow_triple_product(e, n, s, u.y(), v.z(), w.x());
+    n = grow_triple_product(e, n, s, u.z(), v.x(), w.y());
+    return grow_triple_product(e, n, -s, u.z(), v.y(), w.x());
+}
+
+} // namespace
+
+int orientation_sign_expansion(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c, const Vec<3>& d) {
+    // ((b - a) x (c - a)) . (d - a) = -det[a 1; b 1; c 1; d 1]
+    //                               = det[b; c; d] - det[a; c; d] + det[a; b; d] - det[a; b; c]
+    // (cofactors along the column of ones), 24 products of three input coordinates.
+    std::array<double, 96> e{};
+    int n = grow_det3(e.data(), 0, 1, b, c, d);
+    n = grow_det3(e.data(), n, -1, a, c, d);
+    n = grow_det3(e.data(), n, 1, a, b, d);
+    n = grow_det3(e.data(), n, -1, a, b, c);
+    return n == 0 ? 0 : sign_of(e[static_cast<std::size_t>(n - 1)]);
 }
 
 } // namespace sluice

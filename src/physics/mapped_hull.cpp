@@ -1,9 +1,6 @@
 // Inverse-square images of candidate neighbours and their convex hull; see mapped_hull.hpp.
 #include "sluice/physics/mapped_hull.hpp"
 
-#include "sluice/physics/convex_hull_2d.hpp"
-#include "sluice/physics/convex_hull_3d.hpp"
-
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -79,7 +76,8 @@ Real inscribed_ball_radius(std::span<const Vec<D>> images) {
 }
 
 template <int D>
-void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter, MappedHull<D>& h) {
+void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
+                      MappedHullWork<D>& work, MappedHull<D>& h) {
     h.images.clear();
     h.vertices.clear();
     h.boundary.clear();
@@ -93,9 +91,9 @@ void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter, 
     const Real tol = kMappedHullTolerance * h.size;
     // The images the hull is computed on (all, or those the prefilter keeps) and their
     // indices; `dropped` marks the others, which are neither corners nor boundary points.
-    thread_local std::vector<Vec<D>> kept_images;
-    thread_local std::vector<int> kept;
-    thread_local std::vector<char> dropped;
+    std::vector<Vec<D>>& kept_images = work.kept_images;
+    std::vector<int>& kept = work.kept;
+    std::vector<char>& dropped = work.dropped;
     kept_images.clear();
     kept.clear();
     dropped.assign(h.images.size(), 0);
@@ -123,34 +121,43 @@ void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter, 
                 k = kept[static_cast<std::size_t>(k)];
     };
     if constexpr (D == 2) {
-        std::vector<int> corners = quadrant_hull_2d(hull_input, HullPoints::vertices);
-        h.facets = hull_edges_2d(hull_input, corners);
+        std::vector<int>& corners = work.corners;
+        quadrant_hull_2d_into(hull_input, HullPoints::vertices, work.quadrant, corners);
+        hull_edges_2d_into(hull_input, corners, h.facets);
         original(corners);
-        h.vertices = corners;
+        h.vertices.assign(corners.begin(), corners.end());
         std::sort(h.vertices.begin(), h.vertices.end());
         if (h.facets.empty()) {
             // Fewer than 3 corners: a point or a segment; its edge points come exactly.
-            h.boundary = quadrant_hull_2d(hull_input, HullPoints::boundary);
+            quadrant_hull_2d_into(hull_input, HullPoints::boundary, work.quadrant, h.boundary);
             original(h.boundary);
             std::sort(h.boundary.begin(), h.boundary.end());
             return;
         }
     } else {
-        ConvexHull3d v = convex_hull_3d(hull_input, HullPoints::vertices);
+        ConvexHull3d& v = work.hull_3d;
+        convex_hull_3d_into(hull_input, HullPoints::vertices, work.quickhull, v);
         original(v.points);
-        h.vertices = v.points;
-        h.facets = v.facets;
+        h.vertices.assign(v.points.begin(), v.points.end());
+        h.facets.assign(v.facets.begin(), v.facets.end());
         if (h.facets.empty()) {
-            std::vector<int> b = convex_hull_3d(hull_input, HullPoints::boundary).points;
-            original(b);
-            h.boundary = b;
+            convex_hull_3d_into(hull_input, HullPoints::boundary, work.quickhull, v);
+            original(v.points);
+            h.boundary.assign(v.points.begin(), v.points.end());
             return;
         }
     }
     // Points within the tolerance of a facet join the corners. Duplicates of a corner (same
-    // image) are on the boundary too.
+    // image) are on the boundary too. An image nearer the origin than every facet's plane by
+    // more than the tolerance (|r'| < min(-d) - 2 tol: n.r' + d <= |r'| + d < -tol, with a
+    // tolerance's margin for rounding) is on none; the test skips it (issue 22).
+    Real inner = std::numeric_limits<Real>::max();
+    for (const auto& f : h.facets)
+        inner = std::min(inner, -f[D]);
+    const Real skip = inner - 2 * tol;
+    const Real skip2 = skip > 0 ? skip * skip : Real(-1);
     for (std::size_t i = 0; i < h.images.size(); ++i) {
-        if (dropped[i] != 0)
+        if (dropped[i] != 0 || h.images[i].squaredNorm() < skip2)
             continue;
         for (const auto& f : h.facets)
             if (f.template head<D>().dot(h.images[i]) + f[D] > -tol) {
@@ -163,7 +170,8 @@ void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter, 
 template <int D>
 MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets, HullPrefilter prefilter) {
     MappedHull<D> h;
-    mapped_hull_into<D>(offsets, prefilter, h);
+    MappedHullWork<D> work;
+    mapped_hull_into<D>(offsets, prefilter, work, h);
     return h;
 }
 
@@ -178,8 +186,10 @@ bool hull_surrounds_origin(const MappedHull<D>& hull) {
 
 template MappedHull<2> mapped_hull<2>(std::span<const Vec<2>>, HullPrefilter);
 template MappedHull<3> mapped_hull<3>(std::span<const Vec<3>>, HullPrefilter);
-template void mapped_hull_into<2>(std::span<const Vec<2>>, HullPrefilter, MappedHull<2>&);
-template void mapped_hull_into<3>(std::span<const Vec<3>>, HullPrefilter, MappedHull<3>&);
+template void mapped_hull_into<2>(std::span<const Vec<2>>, HullPrefilter, MappedHullWork<2>&,
+                                  MappedHull<2>&);
+template void mapped_hull_into<3>(std::span<const Vec<3>>, HullPrefilter, MappedHullWork<3>&,
+                                  MappedHull<3>&);
 template Real inscribed_ball_radius<2>(std::span<const Vec<2>>);
 template Real inscribed_ball_radius<3>(std::span<const Vec<3>>);
 template bool hull_surrounds_origin<2>(const MappedHull<2>&);

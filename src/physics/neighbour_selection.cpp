@@ -1,16 +1,15 @@
 // Neighbour-selection policies; see include/sluice/physics/neighbour_selection.hpp.
 #include "sluice/physics/neighbour_selection.hpp"
 
-#include "sluice/physics/mapped_hull.hpp"
-
 #include <algorithm>
 
 namespace sluice {
 
 template <int D>
-std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support, Real dx,
-                                   const NeighbourSelection& selection) {
-    std::vector<int> out;
+void select_neighbours_into(std::span<const Vec<D>> offsets, Real support, Real dx,
+                            const NeighbourSelection& selection,
+                            NeighbourSelectionScratch<D>& scratch, std::vector<int>& out) {
+    out.clear();
     const auto add_radius_set = [&] {
         const Real s2 = support * support;
         for (std::size_t j = 0; j < offsets.size(); ++j)
@@ -19,12 +18,11 @@ std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support
     };
     if (selection.policy == NeighbourPolicy::radius) {
         add_radius_set();
-        return out;
+        return;
     }
     const Real rc = Real(selection.candidate_radius_over_dx) * dx;
-    // Reused between calls (once per particle and step).
-    thread_local std::vector<int> candidate;
-    thread_local std::vector<Vec<D>> r;
+    std::vector<int>& candidate = scratch.candidate;
+    std::vector<Vec<D>>& r = scratch.r;
     candidate.clear();
     r.clear();
     for (std::size_t j = 0; j < offsets.size(); ++j) {
@@ -34,14 +32,24 @@ std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support
             r.push_back(offsets[j]);
         }
     }
-    thread_local MappedHull<D> hull; // buffers reused between calls
-    mapped_hull_into<D>(r, HullPrefilter::inscribed_ball, hull);
+    MappedHull<D>& hull = scratch.hull;
+    mapped_hull_into<D>(r, HullPrefilter::inscribed_ball, scratch.hull_work, hull);
+    // Both lists ascend, and so do the candidates: the output ascends without a sort.
     for (int k : selection.hull_boundary ? hull.boundary : hull.vertices)
         out.push_back(candidate[static_cast<std::size_t>(k)]);
-    if (selection.union_with_radius)
+    if (selection.union_with_radius) {
         add_radius_set();
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+}
+
+template <int D>
+std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support, Real dx,
+                                   const NeighbourSelection& selection) {
+    thread_local NeighbourSelectionScratch<D> scratch; // reused between calls
+    std::vector<int> out;
+    select_neighbours_into<D>(offsets, support, dx, selection, scratch, out);
     return out;
 }
 
@@ -49,5 +57,11 @@ template std::vector<int> select_neighbours<2>(std::span<const Vec<2>>, Real, Re
                                                const NeighbourSelection&);
 template std::vector<int> select_neighbours<3>(std::span<const Vec<3>>, Real, Real,
                                                const NeighbourSelection&);
+template void select_neighbours_into<2>(std::span<const Vec<2>>, Real, Real,
+                                        const NeighbourSelection&, NeighbourSelectionScratch<2>&,
+                                        std::vector<int>&);
+template void select_neighbours_into<3>(std::span<const Vec<3>>, Real, Real,
+                                        const NeighbourSelection&, NeighbourSelectionScratch<3>&,
+                                        std::vector<int>&);
 
 } // namespace sluice

@@ -17,7 +17,7 @@ std::span<const Vec<D>> operator_set(std::span<const Vec<D>> offsets, const Neig
                                      Real re, Real dx, SelectedOperatorScratch<D>& scratch) {
     if (s.policy == NeighbourPolicy::radius)
         return offsets;
-    scratch.pick = select_neighbours<D>(offsets, re, dx, s);
+    select_neighbours_into<D>(offsets, re, dx, s, scratch.selection, scratch.pick);
     scratch.sub.clear();
     for (int k : scratch.pick)
         scratch.sub.push_back(offsets[static_cast<std::size_t>(k)]);

@@ -23,6 +23,7 @@
 #include "sluice/core/types.hpp"
 
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace sluice {
@@ -38,6 +39,18 @@ enum class HullPoints {
 [[nodiscard]] std::vector<int> quadrant_hull_2d(std::span<const Vec<2>> points,
                                                 HullPoints which = HullPoints::vertices);
 
+// Buffers of quadrant_hull_2d_into, reused from call to call (one per task or thread).
+struct QuadrantHullWork {
+    std::vector<int> distinct, polygon, corners, on_edge;
+    std::vector<std::pair<Vec<2>, int>> region;
+    std::vector<char> is_corner;
+};
+
+// The same into `out` (a caller that hulls once per particle: no allocation once the buffers
+// have grown).
+void quadrant_hull_2d_into(std::span<const Vec<2>> points, HullPoints which, QuadrantHullWork& work,
+                           std::vector<int>& out);
+
 // Andrew's monotone chain. Returned counter-clockwise, starting at the lowest of the
 // leftmost points.
 [[nodiscard]] std::vector<int> monotone_chain_hull_2d(std::span<const Vec<2>> points,
@@ -47,5 +60,9 @@ enum class HullPoints {
 // unit outward normal n: n.x + d <= 0 inside. Empty for fewer than 3 corners.
 [[nodiscard]] std::vector<Eigen::Matrix<Real, 3, 1>>
 hull_edges_2d(std::span<const Vec<2>> points, const std::vector<int>& clockwise_corners);
+
+// The same into `edges`.
+void hull_edges_2d_into(std::span<const Vec<2>> points, const std::vector<int>& clockwise_corners,
+                        std::vector<Eigen::Matrix<Real, 3, 1>>& edges);
 
 } // namespace sluice

@@ -7,8 +7,10 @@
 // which keeps its direction and inverts its distance, so the nearest particle in each
 // direction lands farthest out and becomes a vertex of the convex hull of the images.
 // MappedHull is that hull in D = 2 (Lee & Lee's quadrant + Sklansky algorithm) or D = 3
-// (Qhull), with its facets for inside/outside tests.
+// (the exact quickhull of quickhull_3d.hpp), with its facets for inside/outside tests.
 #include "sluice/core/types.hpp"
+#include "sluice/physics/convex_hull_2d.hpp"
+#include "sluice/physics/convex_hull_3d.hpp"
 
 #include <span>
 #include <vector>
@@ -60,9 +62,22 @@ template <int D>
 [[nodiscard]] MappedHull<D> mapped_hull(std::span<const Vec<D>> offsets,
                                         HullPrefilter prefilter = HullPrefilter::inscribed_ball);
 
+// Buffers of mapped_hull_into, reused from call to call (one per task or thread).
+template <int D>
+struct MappedHullWork {
+    std::vector<Vec<D>> kept_images; // the images the hull is computed on, when prefiltered
+    std::vector<int> kept;           // their indices
+    std::vector<char> dropped;       // per image: dropped by the prefilter
+    std::vector<int> corners;
+    QuadrantHullWork quadrant; // D = 2
+    QuickhullWork quickhull;   // D = 3
+    ConvexHull3d hull_3d;      // D = 3
+};
+
 // The same into `out`, whose buffers are reused (a caller that hulls once per particle).
 template <int D>
-void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter, MappedHull<D>& out);
+void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
+                      MappedHullWork<D>& work, MappedHull<D>& out);
 
 // True when the images surround the origin: it lies inside the hull by more than the
 // tolerance, so the offsets point into every half-space (they positively span R^D).

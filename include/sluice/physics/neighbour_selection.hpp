@@ -13,6 +13,7 @@
 //    needs more equations than the hull gives, e.g. a second-order least-squares fit).
 // A candidate at r = 0 (a coincident particle) has no image and is never a hull neighbour.
 #include "sluice/core/types.hpp"
+#include "sluice/physics/mapped_hull.hpp"
 #include "sluice/physics/options.hpp"
 
 #include <span>
@@ -25,5 +26,20 @@ namespace sluice {
 template <int D>
 [[nodiscard]] std::vector<int> select_neighbours(std::span<const Vec<D>> offsets, Real support,
                                                  Real dx, const NeighbourSelection& selection);
+
+// Buffers of select_neighbours_into, reused from call to call (one per task: nothing shared).
+template <int D>
+struct NeighbourSelectionScratch {
+    std::vector<int> candidate; // indices of the offsets within the candidate radius
+    std::vector<Vec<D>> r;      // their offsets
+    MappedHull<D> hull;
+    MappedHullWork<D> hull_work;
+};
+
+// The same into `out` (the solver's form: no allocation once the buffers have grown).
+template <int D>
+void select_neighbours_into(std::span<const Vec<D>> offsets, Real support, Real dx,
+                            const NeighbourSelection& selection,
+                            NeighbourSelectionScratch<D>& scratch, std::vector<int>& out);
 
 } // namespace sluice

@@ -14,6 +14,7 @@
 #include "sluice/core/types.hpp"
 #include "sluice/physics/free_surface.hpp"
 #include "sluice/physics/ls_weight.hpp"
+#include "sluice/physics/neighbour_selection.hpp"
 #include "sluice/physics/options.hpp"
 #include "sluice/physics/wmls.hpp"
 
@@ -36,6 +37,7 @@ template <int D>
 struct SelectedOperatorScratch {
     std::vector<Vec<D>> sub;
     std::vector<int> pick;
+    NeighbourSelectionScratch<D> selection;
     std::vector<Vec<D>> linear;
     WmlsWorkspace<D> wmls;
     FreeSurfaceScratch<D> surface;

@@ -1,0 +1,60 @@
+#pragma once
+// Quickhull (Barber, Dobkin & Huhdanpaa 1996) for the small 3-D point sets of the mapped hull
+// (issue 22: the inverse-square images of a particle's ~40-100 candidate neighbours, seed 003),
+// written for them: no set-up per call, buffers owned by the caller.
+//
+// Every facet and horizon decision is the exact orientation predicate of exact_orientation.hpp,
+// so the surface built is always a closed, convex triangulation of the inserted points. One
+// tolerance decides which points are inserted at all, as Qhull's roundoff does (the reference
+// the hull replaces, tests/unit/test_quickhull_3d.cpp): a point at most
+//
+//     eps = kQuickhullCoplanar * max |p|
+//
+// above every facet is coplanar, never a vertex. kQuickhullCoplanar sits in the band where
+// Qhull (2019.1, default options) turns a point raised above a facet into a vertex (4e-15 to
+// 8e-15 of the set's size, measured): rounding of lattice offsets (about 1e-16) stays
+// coplanar in both, any real displacement makes a vertex in both.
+//
+// Corners: the inserted points where the surface turns in three or more directions. A vertex
+// whose triangles lie in one plane (inside a face) or two (on an edge), neighbouring triangles
+// counting as one plane when the apex of one is within eps of the other's plane, is not a
+// corner (Qhull merges such facets and drops the vertex).
+#include "sluice/core/types.hpp"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace sluice {
+
+inline constexpr Real kQuickhullCoplanar = Real(6e-15);
+
+// Reused buffers (one per task or thread).
+struct QuickhullWork {
+    struct Facet {
+        std::array<int, 3> v{};    // counter-clockwise seen from outside
+        std::array<int, 3> nb{};   // nb[k]: the facet across the edge v[k] -> v[k + 1]
+        Vec<3> n = Vec<3>::Zero(); // unit outward normal; n.x + d: distance above the plane
+        Real d = 0;
+        int outside = -1;  // first of the points assigned to this facet (linked by next)
+        int furthest = -1; // the one farthest above it
+        Real furthest_dist = 0;
+        int mark = 0; // visit stamp of the visibility search
+        bool visible = false;
+        bool alive = true;
+    };
+    std::vector<Facet> facets;
+    std::vector<int> next;     // per point: next point of the same outside set
+    std::vector<int> start_of; // per point: the new facet whose horizon edge starts there
+    std::vector<int> incident; // per point: one live facet it is a vertex of (-1: none)
+    std::vector<int> stack, visible, pending, vertices;
+};
+
+// The hull of `points`, when its first tetrahedron (extremes along the widest axis, the point
+// farthest from their line, the point farthest from that plane) has a volume above
+// `min_volume`; false otherwise (too flat: the caller decides). `corners` ascending;
+// `facets` (n, d), unit outward n, n.x + d <= 0 inside, one per triangle.
+bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork& work,
+                  std::vector<int>& corners, std::vector<Eigen::Matrix<Real, 4, 1>>& facets);
+
+} // namespace sluice
