@@ -21,7 +21,10 @@
 
 namespace sluice {
 
-namespace {
+// Named rather than anonymous: the tallies are captured by a lambda inside the RankExchange<D>
+// member template, and a type of an anonymous namespace there draws GCC's -Wsubobject-linkage
+// in the unity builds of the sanitizer presets.
+namespace detail {
 
 // What a rank tells another about the halo it will receive from `holder`.
 struct HaloTally {
@@ -46,7 +49,7 @@ std::size_t index_in(const std::vector<int>& sorted, int rank) {
                                              : sorted.size();
 }
 
-} // namespace
+} // namespace detail
 
 template <int D>
 tasks::MessageRecord RankExchange<D>::migrate(Particles<D>& P) {
@@ -55,7 +58,7 @@ tasks::MessageRecord RankExchange<D>::migrate(Particles<D>& P) {
     const int me = comm_.rank();
     const std::size_t nreach = reach_.size();
     std::vector<tasks::Bytes> migrants(nreach);
-    std::vector<std::vector<HaloTally>> tallies(nreach);
+    std::vector<std::vector<detail::HaloTally>> tallies(nreach);
     halo_in_count_.assign(peers_.size(), 0);
     halo_in_walls_.assign(peers_.size(), 0);
     std::vector<std::size_t> keep;
@@ -71,17 +74,17 @@ tasks::MessageRecord RankExchange<D>::migrate(Particles<D>& P) {
         for (int b : facing) {
             if (b == me) {
                 // A migrant of ours lands in a halo cell of ours: we receive it back as halo.
-                const std::size_t p = index_in(peers_, run_owner);
+                const std::size_t p = detail::index_in(peers_, run_owner);
                 halo_in_count_[p] += run_count;
                 halo_in_walls_[p] += run_walls;
                 continue;
             }
-            const std::size_t r = index_in(reach_, b);
+            const std::size_t r = detail::index_in(reach_, b);
             if (r == nreach)
                 throw std::logic_error(fmt::format("rank {} is not within two peer steps of "
                                                    "rank {}",
                                                    b, me));
-            add_tally(tallies[r], run_owner, run_count, run_walls);
+            detail::add_tally(tallies[r], run_owner, run_count, run_walls);
         }
         run_count = run_walls = 0;
     };
@@ -94,7 +97,7 @@ tasks::MessageRecord RankExchange<D>::migrate(Particles<D>& P) {
             run_cell = cell;
             run_owner = layout_.rank_of(grid_.morton(c));
             tasks::adjacent_owners(grid_, layout_, cell, run_owner, facing);
-            if (run_owner != me && index_in(peers_, run_owner) == peers_.size())
+            if (run_owner != me && detail::index_in(peers_, run_owner) == peers_.size())
                 throw std::logic_error(fmt::format("particle {} jumped to rank {}, not a "
                                                    "neighbour of rank {}",
                                                    P.id[i], run_owner, me));
@@ -104,7 +107,7 @@ tasks::MessageRecord RankExchange<D>::migrate(Particles<D>& P) {
         if (run_owner == me)
             keep.push_back(i);
         else
-            messages::pack_particle(P, i, migrants[index_in(reach_, run_owner)]);
+            messages::pack_particle(P, i, migrants[detail::index_in(reach_, run_owner)]);
     }
     if (run_owner >= 0)
         flush_run();
@@ -131,7 +134,7 @@ tasks::MessageRecord RankExchange<D>::migrate(Particles<D>& P) {
         const auto n = tasks::take<std::uint64_t>(in[r], pos);
         for (std::uint64_t k = 0; k < n; ++k) {
             const auto holder = static_cast<int>(tasks::take<std::uint64_t>(in[r], pos));
-            const std::size_t p = index_in(peers_, holder);
+            const std::size_t p = detail::index_in(peers_, holder);
             if (p == peers_.size())
                 throw std::logic_error(fmt::format("rank {} was told of a halo from rank {}, "
                                                    "not a peer",
