@@ -30,8 +30,7 @@ std::set<Site> surface_2d(const std::set<Site>& sites, double dx, double radius_
             if ((k != i || l != j) && o.norm() <= radius_over_dx * dx)
                 r.push_back(o);
         }
-        if (arc ? is_free_surface<2>(r, radius_over_dx * dx)
-                : is_surface_particle_by_hull<2>(r))
+        if (arc ? is_free_surface<2>(r, radius_over_dx * dx) : is_surface_particle_by_hull<2>(r))
             surface.insert({i, j});
     }
     return surface;

@@ -161,9 +161,9 @@ DeformedErrors deformed_errors(const DeformedSet& s, DeformedSelection selection
             }
         grad.assign(offsets.size(), Vec<2>::Zero());
         lap.assign(offsets.size(), 0);
-        const auto ops = selected_operators<2>(
-            offsets, sel, re, dx, LsWeight::pnu_mps, 2.1 * dx, std::span<Vec<2>>(grad),
-            std::span<Real>(lap), std::span<Vec<2>>(), scratch);
+        const auto ops = selected_operators<2>(offsets, sel, re, dx, LsWeight::pnu_mps, 2.1 * dx,
+                                               std::span<Vec<2>>(grad), std::span<Real>(lap),
+                                               std::span<Vec<2>>(), scratch);
         Vec<2> g = Vec<2>::Zero();
         Real l = 0, abs_sum = 0, sum = 0;
         int used = 0;

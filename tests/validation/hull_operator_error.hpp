@@ -146,8 +146,7 @@ inline SetErrors set_errors(const AnisotropicSet& s, Selection selection) {
             for (const auto& o : offsets)
                 fit_radius = std::max(fit_radius, 1.1 * o.norm());
         }
-        const auto r =
-            wmls_derivatives<2>(offsets, diffs, fit_radius, LsWeight::pnu_mps);
+        const auto r = wmls_derivatives<2>(offsets, diffs, fit_radius, LsWeight::pnu_mps);
         const Vec<2> g(std::cos(s.x[i].x()) * std::cos(s.x[i].y()),
                        -std::sin(s.x[i].x()) * std::sin(s.x[i].y()));
         const Real lap = -2 * f(s.x[i]);

@@ -75,8 +75,7 @@ void shift_group(const K& kernel, const NeighbourList<D>& list, const Particles<
             grad_plain += volume * grad_w;
         }
         const bool near_surface = row[i] == PpeRow::surface || completeness < Real(0.95);
-        shift[i] =
-            fickian_shift<D>(coefficient, grad_c, near_surface, grad_plain, max_shift);
+        shift[i] = fickian_shift<D>(coefficient, grad_c, near_surface, grad_plain, max_shift);
     }
 }
 
@@ -159,8 +158,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
     const LsWeight weight = d.weight;
     if (stage == 0) {
         nb.build_list(
-            cells, list,
-            [re, weight](Real r2) { return ls_weight(std::sqrt(r2), re, weight); },
+            cells, list, [re, weight](Real r2) { return ls_weight(std::sqrt(r2), re, weight); },
             [this](std::uint32_t i) { return P_.kind[i] == Kind::wall; },
             [this](std::uint32_t j) { return P_.kind[j] == Kind::fluid; });
         G.lap.resize(list.pairs);
@@ -188,8 +186,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                     const Real w = ls_weight(off.norm(), re, LsWeight::smooth);
                     G.a[p] = w;
                     wsum += w;
-                    rhs += w * wall_row_term<D>(Real(case_.cfg.rho0),
-                                                         case_.momentum.gravity, -off);
+                    rhs += w * wall_row_term<D>(Real(case_.cfg.rho0), case_.momentum.gravity, -off);
                 }
                 for (std::uint32_t p = b; p < e; ++p)
                     G.a[p] = wsum > 0 ? G.a[p] / wsum : 0;
@@ -259,10 +256,9 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                                          n, d.n0, Real(case_.cfg.projection.surface_density_ratio));
                 d.row[i] = surface ? PpeRow::surface : PpeRow::fluid;
                 // A stencil that cannot fit second derivatives gives no viscous term.
-                d.u_star[i] =
-                    predicted_velocity<D>(v_i, ops.laplacian_ok ? lap_u : Vec<D>::Zero(),
-                                                   Real(case_.cfg.viscosity / case_.cfg.rho0),
-                                                   case_.momentum.gravity, Real(clock_.dt));
+                d.u_star[i] = predicted_velocity<D>(v_i, ops.laplacian_ok ? lap_u : Vec<D>::Zero(),
+                                                    Real(case_.cfg.viscosity / case_.cfg.rho0),
+                                                    case_.momentum.gravity, Real(clock_.dt));
                 continue;
             }
             // Stage 1.
@@ -271,8 +267,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 sum += G.lap[p];
                 div += G.grad[p].dot(d.u_star[list.j[p]] - d.u_star[i]);
             }
-            if (d.row[i] == PpeRow::fluid &&
-                sum <= ppe_min_diagonal_fraction * d.lattice_sum)
+            if (d.row[i] == PpeRow::fluid && sum <= ppe_min_diagonal_fraction * d.lattice_sum)
                 d.row[i] = PpeRow::surface;
             if (d.row[i] == PpeRow::surface) {
                 for (std::uint32_t p = b; p < e; ++p)
@@ -280,9 +275,9 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                 d.bhat[i] = 0;
                 continue;
             }
-            const Real src = ppe_source(Real(case_.cfg.rho0), Real(clock_.dt),
-                                                 Real(case_.cfg.projection.gamma), div,
-                                                 d.number_density[i], d.n0);
+            const Real src =
+                ppe_source(Real(case_.cfg.rho0), Real(clock_.dt), Real(case_.cfg.projection.gamma),
+                           div, d.number_density[i], d.n0);
             for (std::uint32_t p = b; p < e; ++p)
                 G.a[p] = G.lap[p] / sum;
             d.bhat[i] = -src / sum;
@@ -310,8 +305,7 @@ void ProjectionScheme<D>::correct_stage(int group) {
     Real speed = 0;
     std::string failure;
     const Real g_norm = case_.momentum.gravity.norm();
-    const PressureLevel level =
-        d.free_level ? PressureLevel::free : PressureLevel::surface;
+    const PressureLevel level = d.free_level ? PressureLevel::free : PressureLevel::surface;
     // Particle shifting, D = A h^2 per step (not scaled by the flow speed: still water needs
     // it too), added to P8's displacement.
     const bool shifting = case_.cfg.projection.shifting > 0 && !d.failed;
@@ -339,10 +333,8 @@ void ProjectionScheme<D>::correct_stage(int group) {
             p_ref = gradient_reference(p_ref, P_.p[list.j[p]], level);
         Vec<D> grad = Vec<D>::Zero();
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            grad +=
-                grad_coefficient[p] * (gradient_pressure(P_.p[list.j[p]], level) - p_ref);
-        Vec<D> v = corrected_velocity<D>(d.u_star[i], grad, Real(case_.cfg.rho0),
-                                                  Real(clock_.dt));
+            grad += grad_coefficient[p] * (gradient_pressure(P_.p[list.j[p]], level) - p_ref);
+        Vec<D> v = corrected_velocity<D>(d.u_star[i], grad, Real(case_.cfg.rho0), Real(clock_.dt));
         const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             if (P_.kind[list.j[p]] == Kind::wall) {

@@ -2,5 +2,4 @@
 #include "sluice/tasks/comm.hpp"
 #include "sluice/core/cell_grid.hpp"
 #include "sluice/physics/eos.hpp"
-namespace sluice::tasks::tsan {
-} // namespace sluice::tasks::tsan
+namespace sluice::tasks::tsan {} // namespace sluice::tasks::tsan
