@@ -1,12 +1,13 @@
 // The block-Jacobi preconditioner of the projection scheme's pressure solve
-// (include/sluice/solver/block_preconditioner.hpp) on a Poisson problem with a known answer:
-// the 5-point Laplacian on an n x n grid in the row-scaled form of the scheme's system,
-//   u_i - 1/4 sum_{j in N(i)} u_j = -h^2/4 f_i   (interior),   u_i = u_exact (boundary),
-// with u = x^2 + y^2, f = 4, which the 5-point stencil reproduces exactly. One block holding
+// (include/sluice/solver/block_preconditioner.hpp) on the Poisson problem of
+// scaled_poisson_grid.hpp (u = x^2 + y^2 on a 16 x 16 grid, the scheme's row-scaled form,
+// reproduced exactly by the 5-point stencil). One block holding
 // every row is the exact inverse; four blocks make a block-Jacobi iteration that converges to
 // the same answer in fewer sweeps than point Jacobi (the row scaling alone), and so does ILU(0)
 // of the same blocks.
 #include "sluice/solver/block_preconditioner.hpp"
+
+#include "scaled_poisson_grid.hpp"
 
 #include <doctest/doctest.h>
 
@@ -18,45 +19,13 @@ using namespace sluice;
 namespace {
 
 constexpr int n = 16;
-constexpr double h = 1.0 / (n - 1);
+const testing::ScaledPoissonGrid grid(n);
 
-int id(int ix, int iy) {
-    return iy * n + ix;
-}
-double exact(int ix, int iy) {
-    const double x = ix * h, y = iy * h;
-    return x * x + y * y;
-}
-bool boundary(int ix, int iy) {
-    return ix == 0 || iy == 0 || ix == n - 1 || iy == n - 1;
-}
-
-// The scaled system A u = b over the whole grid.
 void poisson(Eigen::SparseMatrix<double>& A, Eigen::VectorXd& b) {
-    std::vector<Eigen::Triplet<double>> t;
-    b.resize(n * n);
-    for (int iy = 0; iy < n; ++iy)
-        for (int ix = 0; ix < n; ++ix) {
-            const int i = id(ix, iy);
-            t.emplace_back(i, i, 1.0);
-            if (boundary(ix, iy)) {
-                b[i] = exact(ix, iy);
-                continue;
-            }
-            for (const int j : {id(ix - 1, iy), id(ix + 1, iy), id(ix, iy - 1), id(ix, iy + 1)})
-                t.emplace_back(i, j, -0.25);
-            b[i] = -h * h / 4 * 4.0;
-        }
-    A.resize(n * n, n * n);
-    A.setFromTriplets(t.begin(), t.end());
+    grid.assemble(A, b);
 }
-
 double max_error(const Eigen::VectorXd& u) {
-    double e = 0;
-    for (int iy = 0; iy < n; ++iy)
-        for (int ix = 0; ix < n; ++ix)
-            e = std::max(e, std::abs(u[id(ix, iy)] - exact(ix, iy)));
-    return e;
+    return grid.max_error(u);
 }
 
 // Stationary iteration u += M^{-1} (b - A u) from u = 0 until |b - A u| <= 1e-10 |b|, with M

@@ -1,8 +1,6 @@
 // The coarse level of the projection scheme's two-level preconditioner
-// (include/sluice/solver/coarse_system.hpp) on a Poisson problem with a known answer: the
-// 5-point Laplacian on an n x n grid in the row-scaled form of the scheme's system,
-//   u_i - 1/4 sum_{j in N(i)} u_j = -h^2/4 f_i   (interior),   u_i = u_exact (boundary),
-// u = x^2 + y^2, f = 4 (reproduced exactly by the stencil). The boundary rows play the
+// (include/sluice/solver/coarse_system.hpp) on the Poisson problem of scaled_poisson_grid.hpp
+// (u = x^2 + y^2 on a 34 x 34 grid, the scheme's row-scaled form). The boundary rows play the
 // scheme's Dirichlet rows: they are in no aggregate (P = 0 there). Aggregates are 4 x 4
 // blocks of interior points, A_c = R A P assembled entry by entry as the scheme does; the
 // coarse step is e = A_c^{-1} R r, z = P e + B (r - A P e), with B the identity (the scheme's
@@ -10,6 +8,8 @@
 // in a stationary iteration).
 #include "sluice/solver/block_preconditioner.hpp"
 #include "sluice/solver/coarse_system.hpp"
+
+#include "scaled_poisson_grid.hpp"
 
 #include <doctest/doctest.h>
 
@@ -22,52 +22,22 @@ using namespace sluice;
 namespace {
 
 constexpr int n = 34; // 32 x 32 interior points: 8 x 8 aggregates
-constexpr double h = 1.0 / (n - 1);
+const testing::ScaledPoissonGrid grid(n);
 
-int id(int ix, int iy) {
-    return iy * n + ix;
-}
-double exact(int ix, int iy) {
-    const double x = ix * h, y = iy * h;
-    return x * x + y * y;
-}
-bool boundary(int ix, int iy) {
-    return ix == 0 || iy == 0 || ix == n - 1 || iy == n - 1;
-}
 // Aggregate of a grid point: 4 x 4 blocks of the interior, -1 on the boundary.
 int aggregate(int i) {
     const int ix = i % n, iy = i / n;
-    if (boundary(ix, iy))
+    if (grid.boundary(ix, iy))
         return -1;
     return ((iy - 1) / 4) * ((n - 2) / 4) + (ix - 1) / 4;
 }
 constexpr int aggregates = ((n - 2) / 4) * ((n - 2) / 4);
 
 void poisson(Eigen::SparseMatrix<double, Eigen::RowMajor>& A, Eigen::VectorXd& b) {
-    std::vector<Eigen::Triplet<double>> t;
-    b.resize(n * n);
-    for (int iy = 0; iy < n; ++iy)
-        for (int ix = 0; ix < n; ++ix) {
-            const int i = id(ix, iy);
-            t.emplace_back(i, i, 1.0);
-            if (boundary(ix, iy)) {
-                b[i] = exact(ix, iy);
-                continue;
-            }
-            for (const int j : {id(ix - 1, iy), id(ix + 1, iy), id(ix, iy - 1), id(ix, iy + 1)})
-                t.emplace_back(i, j, -0.25);
-            b[i] = -h * h / 4 * 4.0;
-        }
-    A.resize(n * n, n * n);
-    A.setFromTriplets(t.begin(), t.end());
+    grid.assemble(A, b);
 }
-
 double max_error(const Eigen::VectorXd& u) {
-    double e = 0;
-    for (int iy = 0; iy < n; ++iy)
-        for (int ix = 0; ix < n; ++ix)
-            e = std::max(e, std::abs(u[id(ix, iy)] - exact(ix, iy)));
-    return e;
+    return grid.max_error(u);
 }
 
 // u += M^{-1} (b - A u) from u = 0 until |b - A u| <= 1e-10 |b|; with `coarse`, M^{-1} is the
