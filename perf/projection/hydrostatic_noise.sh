@@ -5,21 +5,25 @@
 # deviation after 1 s), the worst sample, the wall time and ms per step, and for the
 # projection run the pressure solver's iterations and residual (from its rank log). Probe
 # samples every 0.01 s.
-# Usage: perf/projection/hydrostatic_noise.sh [--threads N] [--end T] [--no-wcsph]
+# Usage: perf/projection/hydrostatic_noise.sh [--threads N] [--end T] [--no-wcsph] [--nice N]
 #            [--set KEY=VALUE]...   (--set: passed to the projection run only, e.g.
 #                                    --set projection.tolerance=1e-5)
+# --nice: the runs' niceness (default 0; a niced run on a loaded machine got ~3 % of a core).
+# The figures (pressure statistics) do not depend on the machine's load; the times do.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 exe=$root/build/release/sluice
 threads=1
 end=5.0
 wcsph=1
+niceness=0
 proj_sets=()
 while [[ $# -gt 0 ]]; do
     case $1 in
     --threads) threads=$2; shift 2 ;;
     --end) end=$2; shift 2 ;;
     --no-wcsph) wcsph=0; shift ;;
+    --nice) niceness=$2; shift 2 ;;
     --set) proj_sets+=(--set "$2"); shift 2 ;;
     *) echo "unknown argument $1"; exit 2 ;;
     esac
@@ -32,7 +36,7 @@ cases=(projection_hydrostatic_2d)
 for c in "${cases[@]}"; do
     extra=()
     [[ $c == projection_hydrostatic_2d ]] && extra=("${proj_sets[@]}")
-    /usr/bin/time -f "$c: CPU %U s user, %S s system" nice -n 10 "$exe" run "$root/cases/$c.toml" \
+    /usr/bin/time -f "$c: CPU %U s user, %S s system" nice -n "$niceness" "$exe" run "$root/cases/$c.toml" \
         --out "$work/$c" --threads "$threads" -q --set time.end_time="$end" \
         --set time.output_interval=0.01 --set output.snapshots=false "${extra[@]}"
 done
