@@ -46,7 +46,12 @@ inline constexpr Real kMappedHullTolerance = Real(1e-9);
 // the origin to the planes of its edges/triangles lies inside their hull, hence inside the
 // images' hull. An image with |r'| < (1 - 1e-2) rho is then farther than 1e-2 rho from every
 // facet of the hull: neither a corner nor within the boundary tolerance of a facet, and it
-// is dropped before the hull is computed (|r'| = 1 / |r|: the far candidates). The hull of
+// is dropped before the hull is computed (|r'| = 1 / |r|: the far candidates). When that
+// surface is also convex (every extreme off a facet lies below the facet's plane by 1e-2 rho:
+// it bounds the convex hull of the extremes, inside the images' hull), an image below every
+// facet plane by more than 1e-2 rho is farther than that from every facet of the hull too and
+// is dropped as well (issue 22, second prefilter: the images near the extremes' directions,
+// which the ball keeps, e.g. 38 -> 21 of ~100 on a jittered 3-D lattice). The hull of
 // the rest has the same corners and facets, so `vertices` and `boundary` are unchanged
 // (tests/unit/test_neighbour_selection.cpp compares both forms on lattices and deformed
 // sets). `none` computes the hull of every image (the reference for that test).
@@ -75,9 +80,16 @@ struct MappedHullWork {
 };
 
 // The same into `out`, whose buffers are reused (a caller that hulls once per particle).
+// `with_boundary` false: `boundary` is left empty (a caller that needs the corners only).
 template <int D>
 void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
-                      MappedHullWork<D>& work, MappedHull<D>& out);
+                      MappedHullWork<D>& work, MappedHull<D>& out, bool with_boundary = true);
+
+// The same from images the caller has already put in `out.images` (inverse_square_map of
+// each offset: the selection maps its candidates while it gathers them).
+template <int D>
+void mapped_hull_of_images_into(HullPrefilter prefilter, MappedHullWork<D>& work,
+                                MappedHull<D>& out, bool with_boundary = true);
 
 // True when the images surround the origin: it lies inside the hull by more than the
 // tolerance, so the offsets point into every half-space (they positively span R^D).
