@@ -18,30 +18,37 @@ namespace {
 constexpr Real kOrientationMargin = Real(1e-6);
 constexpr Real kDropMargin = Real(1e-2);
 
-// The extreme images along the 2 D coordinate half-axes, in one pass: e[2 a] is the index of
-// the image farthest along +axis a, e[2 a + 1] along -axis a (the first of equals; -1 if no
-// image lies strictly on that side). Also returns the largest squared norm.
+// The extreme images along the 2 D coordinate half-axes: e[2 a] is the index of the image
+// farthest along +axis a, e[2 a + 1] along -axis a (the first of equals; -1 if no image lies
+// strictly on that side), and the largest squared norm; fed one image at a time, in order.
 template <int D>
-Real extreme_images(std::span<const Vec<D>> p, std::array<int, 2 * D>& e) {
+struct Extremes {
+    std::array<int, 2 * D> e;
     std::array<Real, 2 * D> far{};
-    e.fill(-1);
     Real size2 = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const Vec<D>& q = p[i];
+    Extremes() { e.fill(-1); }
+    void add(const Vec<D>& q, int i) {
         size2 = std::max(size2, q.squaredNorm());
         for (int a = 0; a < D; ++a) {
             const auto up = static_cast<std::size_t>(2 * a);
             if (q[a] > far[up]) {
                 far[up] = q[a];
-                e[up] = static_cast<int>(i);
+                e[up] = i;
             }
             if (-q[a] > far[up + 1]) {
                 far[up + 1] = -q[a];
-                e[up + 1] = static_cast<int>(i);
+                e[up + 1] = i;
             }
         }
     }
-    return size2;
+};
+
+template <int D>
+Extremes<D> extreme_images(std::span<const Vec<D>> p) {
+    Extremes<D> x;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        x.add(p[i], static_cast<int>(i));
+    return x;
 }
 
 // The star-shaped surface of the prefilter (mapped_hull.hpp): its facets' planes, n.r' <= h
@@ -120,23 +127,21 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
 
 template <int D>
 Real inscribed_ball_radius(std::span<const Vec<D>> images) {
-    std::array<int, 2 * D> ext{};
-    extreme_images<D>(images, ext);
-    return star_surface<D>(images, ext).rho;
+    return star_surface<D>(images, extreme_images<D>(images).e).rho;
 }
 
 namespace {
 
 // The hull of h.images (already mapped), see mapped_hull_into.
 template <int D>
-void hull_of_images(HullPrefilter prefilter, bool with_boundary, MappedHullWork<D>& work,
-                    MappedHull<D>& h) {
+void hull_of_images(const Extremes<D>& extremes, HullPrefilter prefilter, bool with_boundary,
+                    MappedHullWork<D>& work, MappedHull<D>& h) {
     h.vertices.clear();
     h.boundary.clear();
     h.facets.clear();
-    std::array<int, 2 * D> ext{};
+    const std::array<int, 2 * D>& ext = extremes.e;
     // sqrt is monotone: the largest norm is the root of the largest square
-    h.size = std::sqrt(extreme_images<D>(h.images, ext));
+    h.size = std::sqrt(extremes.size2);
     const Real tol = kMappedHullTolerance * h.size;
     // The images the hull is computed on (all, or those the prefilter keeps) and their
     // indices; `dropped` marks the others, which are neither corners nor boundary points.
@@ -250,13 +255,26 @@ void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
     h.images.clear();
     for (const auto& r : offsets)
         h.images.push_back(inverse_square_map<D>(r));
-    hull_of_images<D>(prefilter, with_boundary, work, h);
+    hull_of_images<D>(extreme_images<D>(h.images), prefilter, with_boundary, work, h);
 }
 
 template <int D>
-void mapped_hull_of_images_into(HullPrefilter prefilter, MappedHullWork<D>& work, MappedHull<D>& h,
-                                bool with_boundary) {
-    hull_of_images<D>(prefilter, with_boundary, work, h);
+void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, HullPrefilter prefilter,
+                             MappedHullWork<D>& work, MappedHull<D>& h, std::vector<int>& candidate,
+                             bool with_boundary) {
+    // One pass: the candidates, their images and the images' extremes.
+    candidate.clear();
+    h.images.clear();
+    Extremes<D> extremes;
+    for (std::size_t j = 0; j < offsets.size(); ++j) {
+        const Real r2 = offsets[j].squaredNorm();
+        if (r2 > 0 && r2 <= radius2) {
+            extremes.add(h.images.emplace_back(inverse_square_map<D>(offsets[j])),
+                         static_cast<int>(candidate.size()));
+            candidate.push_back(static_cast<int>(j));
+        }
+    }
+    hull_of_images<D>(extremes, prefilter, with_boundary, work, h);
 }
 
 template <int D>
@@ -282,10 +300,12 @@ template void mapped_hull_into<2>(std::span<const Vec<2>>, HullPrefilter, Mapped
                                   MappedHull<2>&, bool);
 template void mapped_hull_into<3>(std::span<const Vec<3>>, HullPrefilter, MappedHullWork<3>&,
                                   MappedHull<3>&, bool);
-template void mapped_hull_of_images_into<2>(HullPrefilter, MappedHullWork<2>&, MappedHull<2>&,
-                                            bool);
-template void mapped_hull_of_images_into<3>(HullPrefilter, MappedHullWork<3>&, MappedHull<3>&,
-                                            bool);
+template void mapped_hull_within_into<2>(std::span<const Vec<2>>, Real, HullPrefilter,
+                                         MappedHullWork<2>&, MappedHull<2>&, std::vector<int>&,
+                                         bool);
+template void mapped_hull_within_into<3>(std::span<const Vec<3>>, Real, HullPrefilter,
+                                         MappedHullWork<3>&, MappedHull<3>&, std::vector<int>&,
+                                         bool);
 template Real inscribed_ball_radius<2>(std::span<const Vec<2>>);
 template Real inscribed_ball_radius<3>(std::span<const Vec<3>>);
 template bool hull_surrounds_origin<2>(const MappedHull<2>&);

@@ -23,17 +23,8 @@ void select_neighbours_into(std::span<const Vec<D>> offsets, Real support, Real 
     const Real rc = Real(selection.candidate_radius_over_dx) * dx;
     std::vector<int>& candidate = scratch.candidate;
     MappedHull<D>& hull = scratch.hull;
-    candidate.clear();
-    hull.images.clear();
-    for (std::size_t j = 0; j < offsets.size(); ++j) {
-        const Real r2 = offsets[j].squaredNorm();
-        if (r2 > 0 && r2 <= rc * rc) {
-            candidate.push_back(static_cast<int>(j));
-            hull.images.push_back(inverse_square_map<D>(offsets[j]));
-        }
-    }
-    mapped_hull_of_images_into<D>(HullPrefilter::inscribed_ball, scratch.hull_work, hull,
-                                  selection.hull_boundary);
+    mapped_hull_within_into<D>(offsets, rc * rc, HullPrefilter::inscribed_ball, scratch.hull_work,
+                               hull, candidate, selection.hull_boundary);
     // Both lists ascend, and so do the candidates: the output ascends without a sort.
     for (int k : selection.hull_boundary ? hull.boundary : hull.vertices)
         out.push_back(candidate[static_cast<std::size_t>(k)]);

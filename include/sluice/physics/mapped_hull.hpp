@@ -19,7 +19,14 @@ namespace sluice {
 
 template <int D>
 [[nodiscard]] inline Vec<D> inverse_square_map(const Vec<D>& r) {
-    return r / r.squaredNorm();
+    if constexpr (D == 3) {
+        // The same three quotients in one 4-wide division (issue 22: ~100 per particle).
+        const Eigen::Array<Real, 4, 1> q =
+            Eigen::Array<Real, 4, 1>(r.x(), r.y(), r.z(), Real(0)) / r.squaredNorm();
+        return {q[0], q[1], q[2]};
+    } else {
+        return r / r.squaredNorm();
+    }
 }
 
 template <int D>
@@ -85,11 +92,13 @@ template <int D>
 void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
                       MappedHullWork<D>& work, MappedHull<D>& out, bool with_boundary = true);
 
-// The same from images the caller has already put in `out.images` (inverse_square_map of
-// each offset: the selection maps its candidates while it gathers them).
+// The hull of the offsets with 0 < |r|^2 <= radius2 (gathered, mapped and scanned for the
+// prefilter's extremes in one pass): `candidate` their indices into `offsets`, ascending;
+// out.images, vertices and boundary refer to them (the selection's form).
 template <int D>
-void mapped_hull_of_images_into(HullPrefilter prefilter, MappedHullWork<D>& work,
-                                MappedHull<D>& out, bool with_boundary = true);
+void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, HullPrefilter prefilter,
+                             MappedHullWork<D>& work, MappedHull<D>& out,
+                             std::vector<int>& candidate, bool with_boundary = true);
 
 // True when the images surround the origin: it lies inside the hull by more than the
 // tolerance, so the offsets point into every half-space (they positively span R^D).

@@ -36,6 +36,7 @@ struct QuickhullWork {
         std::array<int, 3> nb{};   // nb[k]: the facet across the edge v[k] -> v[k + 1]
         Vec<3> n = Vec<3>::Zero(); // unit outward normal; n.x + d: distance above the plane
         Real d = 0;
+        Real area2 = 0;    // |(v1 - v0) x (v2 - v0)|: twice the area, for the sliver test
         int outside = -1;  // first of the points assigned to this facet (linked by next)
         int furthest = -1; // the one farthest above it
         Real furthest_dist = 0;
