@@ -29,6 +29,9 @@ struct Extremes {
     Extremes() { e.fill(-1); }
     void add(const Vec<D>& q, int i) {
         size2 = std::max(size2, q.squaredNorm());
+        add_directions(q, i);
+    }
+    void add_directions(const Vec<D>& q, int i) {
         for (int a = 0; a < D; ++a) {
             const auto up = static_cast<std::size_t>(2 * a);
             if (q[a] > far[up]) {
@@ -134,7 +137,7 @@ namespace {
 
 // The hull of h.images (already mapped), see mapped_hull_into.
 template <int D>
-void hull_of_images(const Extremes<D>& extremes, HullPrefilter prefilter, bool with_boundary,
+void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_boundary,
                     MappedHullWork<D>& work, MappedHull<D>& h) {
     h.vertices.clear();
     h.boundary.clear();
@@ -265,16 +268,20 @@ void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, Hull
     // One pass: the candidates, their images and the images' extremes.
     candidate.clear();
     h.images.clear();
-    Extremes<D> extremes;
+    Extremes<D> found;
+    Real size2 = 0; // a scalar of its own: the one chain from image to image
     for (std::size_t j = 0; j < offsets.size(); ++j) {
         const Real r2 = offsets[j].squaredNorm();
         if (r2 > 0 && r2 <= radius2) {
-            extremes.add(h.images.emplace_back(inverse_square_map<D>(offsets[j])),
-                         static_cast<int>(candidate.size()));
+            const Vec<D> q = inverse_square_map<D>(offsets[j]);
+            size2 = std::max(size2, q.squaredNorm());
+            found.add_directions(q, static_cast<int>(candidate.size()));
+            h.images.push_back(q);
             candidate.push_back(static_cast<int>(j));
         }
     }
-    hull_of_images<D>(extremes, prefilter, with_boundary, work, h);
+    found.size2 = size2;
+    hull_of_images<D>(found, prefilter, with_boundary, work, h);
 }
 
 template <int D>

@@ -19,14 +19,7 @@ namespace sluice {
 
 template <int D>
 [[nodiscard]] inline Vec<D> inverse_square_map(const Vec<D>& r) {
-    if constexpr (D == 3) {
-        // The same three quotients in one 4-wide division (issue 22: ~100 per particle).
-        const Eigen::Array<Real, 4, 1> q =
-            Eigen::Array<Real, 4, 1>(r.x(), r.y(), r.z(), Real(0)) / r.squaredNorm();
-        return {q[0], q[1], q[2]};
-    } else {
-        return r / r.squaredNorm();
-    }
+    return r / r.squaredNorm();
 }
 
 template <int D>
