@@ -197,11 +197,22 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
             for (int& k : idx)
                 k = kept[static_cast<std::size_t>(k)];
     };
+    // Each corner's image lies on a facet the hull knows (an edge it starts; a live facet
+    // quickhull recorded for it): the boundary test tries that facet first (issue 22).
+    std::vector<int>& on_facet = work.on_facet;
+    on_facet.resize(h.images.size());
+    const auto mark_corner = [&](int i, int facet) {
+        dropped[static_cast<std::size_t>(i)] = 2;
+        on_facet[static_cast<std::size_t>(i)] = facet;
+    };
     if constexpr (D == 2) {
         std::vector<int>& corners = work.corners;
         quadrant_hull_2d_into(hull_input, HullPoints::vertices, work.quadrant, corners);
         hull_edges_2d_into(hull_input, corners, h.facets);
         original(corners);
+        if (with_boundary && !h.facets.empty()) // edge k runs from corner k to k + 1
+            for (std::size_t k = 0; k < corners.size(); ++k)
+                mark_corner(corners[k], static_cast<int>(k));
         h.vertices.assign(corners.begin(), corners.end());
         std::sort(h.vertices.begin(), h.vertices.end());
         if (h.facets.empty()) {
@@ -216,6 +227,12 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
     } else {
         ConvexHull3d& v = work.hull_3d;
         convex_hull_3d_into(hull_input, HullPoints::vertices, work.quickhull, v);
+        if (with_boundary && !v.facets.empty()) // the last quickhull run made them
+            for (const int c : v.points) {
+                const int f = work.quickhull.incident[static_cast<std::size_t>(c)];
+                mark_corner(filtered ? kept[static_cast<std::size_t>(c)] : c,
+                            f < 0 ? -1 : work.quickhull.output[static_cast<std::size_t>(f)]);
+            }
         original(v.points);
         h.vertices.assign(v.points.begin(), v.points.end());
         h.facets.assign(v.facets.begin(), v.facets.end());
@@ -239,14 +256,24 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         inner = std::min(inner, -f[D]);
     const Real skip = inner - 2 * tol;
     const Real skip2 = skip > 0 ? skip * skip : Real(-1);
-    for (std::size_t i = 0; i < h.images.size(); ++i) {
-        if (dropped[i] != 0 || h.images[i].squaredNorm() < skip2)
-            continue;
+    // Whether some facet holds the image: the same answer whichever facet is tried first.
+    const auto on_a_facet = [&](const Vec<D>& q) {
         for (const auto& f : h.facets)
-            if (f.template head<D>().dot(h.images[i]) + f[D] > -tol) {
-                h.boundary.push_back(static_cast<int>(i));
-                break;
-            }
+            if (f.template head<D>().dot(q) + f[D] > -tol)
+                return true;
+        return false;
+    };
+    for (std::size_t i = 0; i < h.images.size(); ++i) {
+        if (dropped[i] == 1 || h.images[i].squaredNorm() < skip2)
+            continue;
+        const Vec<D>& q = h.images[i];
+        bool on = false;
+        if (dropped[i] == 2 && on_facet[i] >= 0) {
+            const auto& f = h.facets[static_cast<std::size_t>(on_facet[i])];
+            on = f.template head<D>().dot(q) + f[D] > -tol;
+        }
+        if (on || on_a_facet(q))
+            h.boundary.push_back(static_cast<int>(i));
     }
 }
 

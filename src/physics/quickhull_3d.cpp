@@ -308,9 +308,14 @@ bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork
         if (H.f(work.incident[static_cast<std::size_t>(v)]).alive && H.corner(v))
             corners.push_back(v);
     std::sort(corners.begin(), corners.end());
-    for (const Facet& F : work.facets)
-        if (F.alive && !H.sliver(F))
+    work.output.assign(work.facets.size(), -1);
+    for (std::size_t k = 0; k < work.facets.size(); ++k) {
+        const Facet& F = work.facets[k];
+        if (F.alive && !H.sliver(F)) {
+            work.output[k] = static_cast<int>(facets.size());
             facets.emplace_back(F.n.x(), F.n.y(), F.n.z(), F.d);
+        }
+    }
     return true;
 }
 

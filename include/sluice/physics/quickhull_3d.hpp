@@ -48,6 +48,7 @@ struct QuickhullWork {
     std::vector<int> next;     // per point: next point of the same outside set
     std::vector<int> start_of; // per point: the new facet whose horizon edge starts there
     std::vector<int> incident; // per point: one live facet it is a vertex of (-1: none)
+    std::vector<int> output;   // per facet: its index in quickhull_3d's `facets` (-1: none)
     std::vector<int> stack, visible, pending, vertices;
 };
 
