@@ -18,76 +18,133 @@ namespace {
 constexpr Real kOrientationMargin = Real(1e-6);
 constexpr Real kDropMargin = Real(1e-2);
 
-// Index of the image farthest along +axis (sign = 1) or -axis (sign = -1); -1 if none is
-// strictly on that side.
+// The extreme images along the 2 D coordinate half-axes: e[2 a] is the index of the image
+// farthest along +axis a, e[2 a + 1] along -axis a (the first of equals; -1 if no image lies
+// strictly on that side), and the largest squared norm; fed one image at a time, in order.
 template <int D>
-int extreme_image(std::span<const Vec<D>> p, int axis, Real sign) {
-    int best = -1;
-    Real far = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-        if (sign * p[i][axis] > far) {
-            far = sign * p[i][axis];
-            best = static_cast<int>(i);
+struct Extremes {
+    std::array<int, 2 * D> e;
+    std::array<Real, 2 * D> far{};
+    Real size2 = 0;
+    Extremes() { e.fill(-1); }
+    void add(const Vec<D>& q, int i) {
+        size2 = std::max(size2, q.squaredNorm());
+        add_directions(q, i);
+    }
+    void add_directions(const Vec<D>& q, int i) {
+        for (int a = 0; a < D; ++a) {
+            const auto up = static_cast<std::size_t>(2 * a);
+            if (q[a] > far[up]) {
+                far[up] = q[a];
+                e[up] = i;
+            }
+            if (-q[a] > far[up + 1]) {
+                far[up + 1] = -q[a];
+                e[up + 1] = i;
+            }
         }
-    return best;
+    }
+};
+
+template <int D>
+Extremes<D> extreme_images(std::span<const Vec<D>> p) {
+    Extremes<D> x;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        x.add(p[i], static_cast<int>(i));
+    return x;
 }
 
-} // namespace
+// The star-shaped surface of the prefilter (mapped_hull.hpp): its facets' planes, n.r' <= h
+// inside with unit outward n, and its inradius rho about the origin (0: not star-shaped, or a
+// half-axis without an image). 2-D: 4 edges; 3-D: 8 triangles, one per octant.
+template <int D>
+struct StarSurface {
+    static constexpr int kFacets = D == 2 ? 4 : 8;
+    std::array<Vec<D>, kFacets> n;
+    std::array<Real, kFacets> h{};
+    Real rho = 0;
+    bool convex = false; // every extreme not on a facet lies below its plane by the drop margin
+};
 
 template <int D>
-Real inscribed_ball_radius(std::span<const Vec<D>> images) {
-    // e[2 a] along +axis a, e[2 a + 1] along -axis a.
+StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int, 2 * D>& ext) {
+    StarSurface<D> s;
     std::array<Vec<D>, 2 * D> e;
-    for (int a = 0; a < D; ++a)
-        for (int s = 0; s < 2; ++s) {
-            const int k = extreme_image<D>(images, a, s == 0 ? Real(1) : Real(-1));
-            if (k < 0)
-                return 0;
-            e[static_cast<std::size_t>(2 * a + s)] = images[static_cast<std::size_t>(k)];
-        }
+    for (std::size_t k = 0; k < e.size(); ++k) {
+        if (ext[k] < 0)
+            return s;
+        e[k] = images[static_cast<std::size_t>(ext[k])];
+    }
+    // Corners of each facet, as indices into e.
+    std::array<std::array<int, D>, StarSurface<D>::kFacets> corners;
     Real rho = std::numeric_limits<Real>::max();
     if constexpr (D == 2) {
         // Edges (+x, +y), (+y, -x), (-x, -y), (-y, +x): counter-clockwise about the origin.
-        const std::array<std::array<int, 2>, 4> edges{{{0, 2}, {2, 1}, {1, 3}, {3, 0}}};
-        for (const auto& [u, v] : edges) {
-            const Vec<2>& a = e[static_cast<std::size_t>(u)];
-            const Vec<2>& b = e[static_cast<std::size_t>(v)];
+        corners = {{{0, 2}, {2, 1}, {1, 3}, {3, 0}}};
+        for (std::size_t t = 0; t < 4; ++t) {
+            const Vec<2>& a = e[static_cast<std::size_t>(corners[t][0])];
+            const Vec<2>& b = e[static_cast<std::size_t>(corners[t][1])];
             const Real cross = a.x() * b.y() - a.y() * b.x();
             if (!(cross > kOrientationMargin * a.norm() * b.norm()))
-                return 0;
-            rho = std::min(rho, cross / (b - a).norm());
+                return s;
+            const Vec<2> edge = b - a;
+            const Real length = edge.norm();
+            s.h[t] = cross / length;
+            s.n[t] = Vec<2>(edge.y(), -edge.x()) / length; // right of a -> b: outward
+            rho = std::min(rho, s.h[t]);
         }
     } else {
         // Octant (sx, sy, sz): the triangle of the extremes along sx x, sy y, sz z, whose
         // determinant has the sign sx sy sz on the regular octahedron.
         for (int o = 0; o < 8; ++o) {
             const int sx = o & 1, sy = (o >> 1) & 1, sz = (o >> 2) & 1;
+            const auto t = static_cast<std::size_t>(o);
+            corners[t] = {sx, 2 + sy, 4 + sz};
             const Vec<3>& a = e[static_cast<std::size_t>(sx)];
             const Vec<3>& b = e[static_cast<std::size_t>(2 + sy)];
             const Vec<3>& c = e[static_cast<std::size_t>(4 + sz)];
             const Real sign = ((sx + sy + sz) & 1) != 0 ? Real(-1) : Real(1);
             const Real det = sign * a.dot(b.cross(c));
             if (!(det > kOrientationMargin * a.norm() * b.norm() * c.norm()))
-                return 0;
-            rho = std::min(rho, det / (b - a).cross(c - a).norm());
+                return s;
+            const Vec<3> m = (b - a).cross(c - a);
+            const Real area2 = m.norm();
+            s.h[t] = det / area2;
+            s.n[t] = sign * m / area2;
+            rho = std::min(rho, s.h[t]);
         }
     }
-    return rho;
+    s.rho = rho;
+    // Convex when every extreme off a facet lies clearly below its plane (each edge's other
+    // triangle turns down): the surface then bounds conv(e), which lies inside the hull.
+    s.convex = true;
+    for (std::size_t t = 0; t < s.n.size(); ++t)
+        for (int k = 0; k < 2 * D; ++k)
+            if (std::find(corners[t].begin(), corners[t].end(), k) == corners[t].end() &&
+                !(s.n[t].dot(e[static_cast<std::size_t>(k)]) - s.h[t] < -kDropMargin * rho))
+                s.convex = false;
+    return s;
 }
 
+} // namespace
+
 template <int D>
-void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
-                      MappedHullWork<D>& work, MappedHull<D>& h) {
-    h.images.clear();
+Real inscribed_ball_radius(std::span<const Vec<D>> images) {
+    return star_surface<D>(images, extreme_images<D>(images).e).rho;
+}
+
+namespace {
+
+// The hull of h.images (already mapped), see mapped_hull_into.
+template <int D>
+void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_boundary,
+                    MappedHullWork<D>& work, MappedHull<D>& h) {
     h.vertices.clear();
     h.boundary.clear();
     h.facets.clear();
-    Real size2 = 0; // sqrt is monotone: the largest norm is the root of the largest square
-    for (const auto& r : offsets) {
-        h.images.push_back(inverse_square_map<D>(r));
-        size2 = std::max(size2, h.images.back().squaredNorm());
-    }
-    h.size = std::sqrt(size2);
+    const std::array<int, 2 * D>& ext = extremes.e;
+    // sqrt is monotone: the largest norm is the root of the largest square
+    h.size = std::sqrt(extremes.size2);
     const Real tol = kMappedHullTolerance * h.size;
     // The images the hull is computed on (all, or those the prefilter keeps) and their
     // indices; `dropped` marks the others, which are neither corners nor boundary points.
@@ -99,16 +156,36 @@ void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
     dropped.assign(h.images.size(), 0);
     std::span<const Vec<D>> hull_input(h.images);
     if (prefilter == HullPrefilter::inscribed_ball) {
-        const Real rho = inscribed_ball_radius<D>(h.images);
+        const StarSurface<D> star = star_surface<D>(h.images, ext);
+        const Real rho = star.rho;
+        const Real margin = kDropMargin * rho;
         const Real drop = (1 - kDropMargin) * rho;
+        // Inside conv(e) by more than the margin (convex surface only): below every facet
+        // plane by the margin. The own orthant's facet first, the likeliest to fail.
+        const auto deep_inside = [&](const Vec<D>& q) {
+            if (!star.convex)
+                return false;
+            int own = 0;
+            for (int a = 0; a < D; ++a)
+                own |= (q[a] < 0 ? 1 : 0) << a;
+            if constexpr (D == 2)
+                own = std::array<int, 4>{0, 1, 3, 2}[static_cast<std::size_t>(own)];
+            for (int k = 0; k < StarSurface<D>::kFacets; ++k) {
+                const auto t = static_cast<std::size_t>(k ^ own);
+                if (!(star.n[t].dot(q) - star.h[t] < -margin))
+                    return false;
+            }
+            return true;
+        };
         // The margin left inside every facet must dwarf the boundary tolerance.
-        if (rho > 0 && kDropMargin * rho > 1e3 * tol) {
+        if (rho > 0 && margin > 1e3 * tol) {
             for (std::size_t i = 0; i < h.images.size(); ++i) {
-                if (h.images[i].squaredNorm() < drop * drop) {
+                const Vec<D>& q = h.images[i];
+                if (q.squaredNorm() < drop * drop || deep_inside(q)) {
                     dropped[i] = 1;
                 } else {
                     kept.push_back(static_cast<int>(i));
-                    kept_images.push_back(h.images[i]);
+                    kept_images.push_back(q);
                 }
             }
             hull_input = kept_images;
@@ -120,33 +197,56 @@ void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
             for (int& k : idx)
                 k = kept[static_cast<std::size_t>(k)];
     };
+    // Each corner's image lies on a facet the hull knows (an edge it starts; a live facet
+    // quickhull recorded for it): the boundary test tries that facet first (issue 22).
+    std::vector<int>& on_facet = work.on_facet;
+    on_facet.resize(h.images.size());
+    const auto mark_corner = [&](int i, int facet) {
+        dropped[static_cast<std::size_t>(i)] = 2;
+        on_facet[static_cast<std::size_t>(i)] = facet;
+    };
     if constexpr (D == 2) {
         std::vector<int>& corners = work.corners;
         quadrant_hull_2d_into(hull_input, HullPoints::vertices, work.quadrant, corners);
         hull_edges_2d_into(hull_input, corners, h.facets);
         original(corners);
+        if (with_boundary && !h.facets.empty()) // edge k runs from corner k to k + 1
+            for (std::size_t k = 0; k < corners.size(); ++k)
+                mark_corner(corners[k], static_cast<int>(k));
         h.vertices.assign(corners.begin(), corners.end());
         std::sort(h.vertices.begin(), h.vertices.end());
         if (h.facets.empty()) {
             // Fewer than 3 corners: a point or a segment; its edge points come exactly.
-            quadrant_hull_2d_into(hull_input, HullPoints::boundary, work.quadrant, h.boundary);
-            original(h.boundary);
-            std::sort(h.boundary.begin(), h.boundary.end());
+            if (with_boundary) {
+                quadrant_hull_2d_into(hull_input, HullPoints::boundary, work.quadrant, h.boundary);
+                original(h.boundary);
+                std::sort(h.boundary.begin(), h.boundary.end());
+            }
             return;
         }
     } else {
         ConvexHull3d& v = work.hull_3d;
         convex_hull_3d_into(hull_input, HullPoints::vertices, work.quickhull, v);
+        if (with_boundary && !v.facets.empty()) // the last quickhull run made them
+            for (const int c : v.points) {
+                const int f = work.quickhull.incident[static_cast<std::size_t>(c)];
+                mark_corner(filtered ? kept[static_cast<std::size_t>(c)] : c,
+                            f < 0 ? -1 : work.quickhull.output[static_cast<std::size_t>(f)]);
+            }
         original(v.points);
         h.vertices.assign(v.points.begin(), v.points.end());
         h.facets.assign(v.facets.begin(), v.facets.end());
         if (h.facets.empty()) {
-            convex_hull_3d_into(hull_input, HullPoints::boundary, work.quickhull, v);
-            original(v.points);
-            h.boundary.assign(v.points.begin(), v.points.end());
+            if (with_boundary) {
+                convex_hull_3d_into(hull_input, HullPoints::boundary, work.quickhull, v);
+                original(v.points);
+                h.boundary.assign(v.points.begin(), v.points.end());
+            }
             return;
         }
     }
+    if (!with_boundary)
+        return;
     // Points within the tolerance of a facet join the corners. Duplicates of a corner (same
     // image) are on the boundary too. An image nearer the origin than every facet's plane by
     // more than the tolerance (|r'| < min(-d) - 2 tol: n.r' + d <= |r'| + d < -tol, with a
@@ -156,15 +256,59 @@ void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
         inner = std::min(inner, -f[D]);
     const Real skip = inner - 2 * tol;
     const Real skip2 = skip > 0 ? skip * skip : Real(-1);
-    for (std::size_t i = 0; i < h.images.size(); ++i) {
-        if (dropped[i] != 0 || h.images[i].squaredNorm() < skip2)
-            continue;
+    // Whether some facet holds the image: the same answer whichever facet is tried first.
+    const auto on_a_facet = [&](const Vec<D>& q) {
         for (const auto& f : h.facets)
-            if (f.template head<D>().dot(h.images[i]) + f[D] > -tol) {
-                h.boundary.push_back(static_cast<int>(i));
-                break;
-            }
+            if (f.template head<D>().dot(q) + f[D] > -tol)
+                return true;
+        return false;
+    };
+    for (std::size_t i = 0; i < h.images.size(); ++i) {
+        if (dropped[i] == 1 || h.images[i].squaredNorm() < skip2)
+            continue;
+        const Vec<D>& q = h.images[i];
+        bool on = false;
+        if (dropped[i] == 2 && on_facet[i] >= 0) {
+            const auto& f = h.facets[static_cast<std::size_t>(on_facet[i])];
+            on = f.template head<D>().dot(q) + f[D] > -tol;
+        }
+        if (on || on_a_facet(q))
+            h.boundary.push_back(static_cast<int>(i));
     }
+}
+
+} // namespace
+
+template <int D>
+void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
+                      MappedHullWork<D>& work, MappedHull<D>& h, bool with_boundary) {
+    h.images.clear();
+    for (const auto& r : offsets)
+        h.images.push_back(inverse_square_map<D>(r));
+    hull_of_images<D>(extreme_images<D>(h.images), prefilter, with_boundary, work, h);
+}
+
+template <int D>
+void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, HullPrefilter prefilter,
+                             MappedHullWork<D>& work, MappedHull<D>& h, std::vector<int>& candidate,
+                             bool with_boundary) {
+    // One pass: the candidates, their images and the images' extremes.
+    candidate.clear();
+    h.images.clear();
+    Extremes<D> found;
+    Real size2 = 0; // a scalar of its own: the one chain from image to image
+    for (std::size_t j = 0; j < offsets.size(); ++j) {
+        const Real r2 = offsets[j].squaredNorm();
+        if (r2 > 0 && r2 <= radius2) {
+            const Vec<D> q = inverse_square_map<D>(offsets[j]);
+            size2 = std::max(size2, q.squaredNorm());
+            found.add_directions(q, static_cast<int>(candidate.size()));
+            h.images.push_back(q);
+            candidate.push_back(static_cast<int>(j));
+        }
+    }
+    found.size2 = size2;
+    hull_of_images<D>(found, prefilter, with_boundary, work, h);
 }
 
 template <int D>
@@ -187,9 +331,15 @@ bool hull_surrounds_origin(const MappedHull<D>& hull) {
 template MappedHull<2> mapped_hull<2>(std::span<const Vec<2>>, HullPrefilter);
 template MappedHull<3> mapped_hull<3>(std::span<const Vec<3>>, HullPrefilter);
 template void mapped_hull_into<2>(std::span<const Vec<2>>, HullPrefilter, MappedHullWork<2>&,
-                                  MappedHull<2>&);
+                                  MappedHull<2>&, bool);
 template void mapped_hull_into<3>(std::span<const Vec<3>>, HullPrefilter, MappedHullWork<3>&,
-                                  MappedHull<3>&);
+                                  MappedHull<3>&, bool);
+template void mapped_hull_within_into<2>(std::span<const Vec<2>>, Real, HullPrefilter,
+                                         MappedHullWork<2>&, MappedHull<2>&, std::vector<int>&,
+                                         bool);
+template void mapped_hull_within_into<3>(std::span<const Vec<3>>, Real, HullPrefilter,
+                                         MappedHullWork<3>&, MappedHull<3>&, std::vector<int>&,
+                                         bool);
 template Real inscribed_ball_radius<2>(std::span<const Vec<2>>);
 template Real inscribed_ball_radius<3>(std::span<const Vec<3>>);
 template bool hull_surrounds_origin<2>(const MappedHull<2>&);

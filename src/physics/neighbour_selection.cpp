@@ -22,18 +22,9 @@ void select_neighbours_into(std::span<const Vec<D>> offsets, Real support, Real 
     }
     const Real rc = Real(selection.candidate_radius_over_dx) * dx;
     std::vector<int>& candidate = scratch.candidate;
-    std::vector<Vec<D>>& r = scratch.r;
-    candidate.clear();
-    r.clear();
-    for (std::size_t j = 0; j < offsets.size(); ++j) {
-        const Real r2 = offsets[j].squaredNorm();
-        if (r2 > 0 && r2 <= rc * rc) {
-            candidate.push_back(static_cast<int>(j));
-            r.push_back(offsets[j]);
-        }
-    }
     MappedHull<D>& hull = scratch.hull;
-    mapped_hull_into<D>(r, HullPrefilter::inscribed_ball, scratch.hull_work, hull);
+    mapped_hull_within_into<D>(offsets, rc * rc, HullPrefilter::inscribed_ball, scratch.hull_work,
+                               hull, candidate, selection.hull_boundary);
     // Both lists ascend, and so do the candidates: the output ascends without a sort.
     for (int k : selection.hull_boundary ? hull.boundary : hull.vertices)
         out.push_back(candidate[static_cast<std::size_t>(k)]);

@@ -38,7 +38,8 @@ struct Hull {
         Facet F;
         F.v = {a, b, c};
         const Vec<3> n = (at(b) - at(a)).cross(at(c) - at(a));
-        F.n = n / n.norm();
+        F.area2 = n.norm();
+        F.n = n / F.area2;
         F.d = -F.n.dot(at(a));
         w.facets.push_back(F);
         return static_cast<int>(w.facets.size()) - 1;
@@ -50,7 +51,7 @@ struct Hull {
         const Vec<3>& c = at(F.v[2]);
         const Real longest =
             std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()});
-        return !((b - a).cross(c - a).norm() > kSliver * longest);
+        return !(F.area2 > kSliver * longest);
     }
 
     // Puts point q in the outside set of the first facet in [first, last) it lies more than
@@ -218,12 +219,29 @@ bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork
 
     // First tetrahedron: the extremes along the widest axis, the point farthest from their
     // line, the point farthest from the plane of the three.
+    // (One pass for the six extremes; of equal ones the lowest index, as argmax.)
     int axis = 0;
     std::array<int, 3> lo{}, hi{};
+    std::array<Real, 3> lo_key{}, hi_key{};
+    for (int a = 0; a < 3; ++a) {
+        lo_key[static_cast<std::size_t>(a)] = -at(0)[a];
+        hi_key[static_cast<std::size_t>(a)] = at(0)[a];
+    }
+    for (std::size_t q = 1; q < n; ++q) {
+        const Vec<3>& x = points[q];
+        for (std::size_t a = 0; a < 3; ++a) {
+            if (-x[static_cast<Eigen::Index>(a)] > lo_key[a]) {
+                lo_key[a] = -x[static_cast<Eigen::Index>(a)];
+                lo[a] = static_cast<int>(q);
+            }
+            if (x[static_cast<Eigen::Index>(a)] > hi_key[a]) {
+                hi_key[a] = x[static_cast<Eigen::Index>(a)];
+                hi[a] = static_cast<int>(q);
+            }
+        }
+    }
     Real widest = -1;
     for (int a = 0; a < 3; ++a) {
-        lo[static_cast<std::size_t>(a)] = argmax(n, [&](int i) { return -at(i)[a]; });
-        hi[static_cast<std::size_t>(a)] = argmax(n, [&](int i) { return at(i)[a]; });
         const Real width =
             at(hi[static_cast<std::size_t>(a)])[a] - at(lo[static_cast<std::size_t>(a)])[a];
         if (width > widest) {
@@ -290,9 +308,14 @@ bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork
         if (H.f(work.incident[static_cast<std::size_t>(v)]).alive && H.corner(v))
             corners.push_back(v);
     std::sort(corners.begin(), corners.end());
-    for (const Facet& F : work.facets)
-        if (F.alive && !H.sliver(F))
+    work.output.assign(work.facets.size(), -1);
+    for (std::size_t k = 0; k < work.facets.size(); ++k) {
+        const Facet& F = work.facets[k];
+        if (F.alive && !H.sliver(F)) {
+            work.output[k] = static_cast<int>(facets.size());
             facets.emplace_back(F.n.x(), F.n.y(), F.n.z(), F.d);
+        }
+    }
     return true;
 }
 

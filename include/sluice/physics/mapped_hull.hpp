@@ -46,7 +46,12 @@ inline constexpr Real kMappedHullTolerance = Real(1e-9);
 // the origin to the planes of its edges/triangles lies inside their hull, hence inside the
 // images' hull. An image with |r'| < (1 - 1e-2) rho is then farther than 1e-2 rho from every
 // facet of the hull: neither a corner nor within the boundary tolerance of a facet, and it
-// is dropped before the hull is computed (|r'| = 1 / |r|: the far candidates). The hull of
+// is dropped before the hull is computed (|r'| = 1 / |r|: the far candidates). When that
+// surface is also convex (every extreme off a facet lies below the facet's plane by 1e-2 rho:
+// it bounds the convex hull of the extremes, inside the images' hull), an image below every
+// facet plane by more than 1e-2 rho is farther than that from every facet of the hull too and
+// is dropped as well (issue 22, second prefilter: the images near the extremes' directions,
+// which the ball keeps: 58 -> 21 of 123 on a jittered 3-D lattice). The hull of
 // the rest has the same corners and facets, so `vertices` and `boundary` are unchanged
 // (tests/unit/test_neighbour_selection.cpp compares both forms on lattices and deformed
 // sets). `none` computes the hull of every image (the reference for that test).
@@ -67,7 +72,8 @@ template <int D>
 struct MappedHullWork {
     std::vector<Vec<D>> kept_images; // the images the hull is computed on, when prefiltered
     std::vector<int> kept;           // their indices
-    std::vector<char> dropped;       // per image: dropped by the prefilter
+    std::vector<char> dropped;       // per image: 1 dropped by the prefilter, 2 a corner
+    std::vector<int> on_facet;       // per corner image: a facet it lies on (-1: unknown)
     std::vector<int> corners;
     QuadrantHullWork quadrant; // D = 2
     QuickhullWork quickhull;   // D = 3
@@ -75,9 +81,18 @@ struct MappedHullWork {
 };
 
 // The same into `out`, whose buffers are reused (a caller that hulls once per particle).
+// `with_boundary` false: `boundary` is left empty (a caller that needs the corners only).
 template <int D>
 void mapped_hull_into(std::span<const Vec<D>> offsets, HullPrefilter prefilter,
-                      MappedHullWork<D>& work, MappedHull<D>& out);
+                      MappedHullWork<D>& work, MappedHull<D>& out, bool with_boundary = true);
+
+// The hull of the offsets with 0 < |r|^2 <= radius2 (gathered, mapped and scanned for the
+// prefilter's extremes in one pass): `candidate` their indices into `offsets`, ascending;
+// out.images, vertices and boundary refer to them (the selection's form).
+template <int D>
+void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, HullPrefilter prefilter,
+                             MappedHullWork<D>& work, MappedHull<D>& out,
+                             std::vector<int>& candidate, bool with_boundary = true);
 
 // True when the images surround the origin: it lies inside the hull by more than the
 // tolerance, so the offsets point into every half-space (they positively span R^D).

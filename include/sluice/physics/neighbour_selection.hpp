@@ -31,8 +31,7 @@ template <int D>
 template <int D>
 struct NeighbourSelectionScratch {
     std::vector<int> candidate; // indices of the offsets within the candidate radius
-    std::vector<Vec<D>> r;      // their offsets
-    MappedHull<D> hull;
+    MappedHull<D> hull;         // hull.images: their inverse-square images
     MappedHullWork<D> hull_work;
 };
 
