@@ -162,6 +162,17 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     while (sim.time() < cfg.end_time * (1 - 1e-12)) {
         // Requests go into the next step's reduction, so every rank acts on them together.
         sim.post_request(requests.pending());
+        // Whether the loop below reads nothing of the state after this step and another step
+        // follows: then the next step's graph may start while this step's agreement travels
+        // (the agreed requests, which only the agreement knows, make it stop and run the
+        // step again). Every rank decides the same.
+        {
+            const double t_next = sim.next_time();
+            const bool last = !(t_next < cfg.end_time * (1 - 1e-12));
+            const bool checkpoint = cfg.checkpoint_every_steps > 0 &&
+                                    (sim.steps() + 1) % cfg.checkpoint_every_steps == 0;
+            sim.allow_run_ahead(!last && !checkpoint && outputs.quiet_at(t_next));
+        }
         try {
             sim.step();
         } catch (const RunError& e) {

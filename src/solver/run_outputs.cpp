@@ -63,6 +63,12 @@ void RunOutputs<D>::sample(const Simulation<D>& sim, bool force) {
 }
 
 template <int D>
+bool RunOutputs<D>::quiet_at(double t) const {
+    const OutputSchedule::Due due = schedule_.due(t, false);
+    return due.probes.empty() && !due.output;
+}
+
+template <int D>
 void RunOutputs<D>::finish(const Simulation<D>& sim) {
     if (sim.time() != schedule_.last_output_time())
         sample(sim, true);

@@ -27,6 +27,8 @@ public:
 
     // The probes and the snapshot due at the simulation's time (every one when `force`).
     void sample(const Simulation<D>& sim, bool force);
+    // Whether sample() at time t would read nothing of the state (no probe or output due).
+    [[nodiscard]] bool quiet_at(double t) const;
     // The end time's sample, unless the last sample was taken there.
     void finish(const Simulation<D>& sim);
     // After a failed step: the state every rank holds (the last good one) as a snapshot, even

@@ -136,6 +136,10 @@ void write_run_summary(const Simulation<D>& sim, const CaseConfig& cfg, const st
     extra["cell_groups"] = graph.group_count();
     extra["decompositions"] = sim.decompositions();
     extra["list_rebuilds"] = sim.list_rebuilds();
+    // Steps whose graph started before the previous step's agreement completed, and those of
+    // them run again (docs/ARCHITECTURE.md, "Time step").
+    extra["steps_run_ahead"] = sim.steps_run_ahead();
+    extra["steps_run_ahead_discarded"] = sim.steps_run_ahead_discarded();
     extra["last_dt"] = sim.dt();
     if (f.resumed)
         extra["restarted_from_step"] = f.start_step;

@@ -333,14 +333,29 @@ void Simulation<D>::build_graph() {
 template <int D>
 void Simulation<D>::step() {
     // The step graph of docs/ARCHITECTURE.md ("Schemes"); the same for every scheme.
-    neighbours_.count_step();
-    const std::string task_error = run_graphs();
+    // When this step's graph ran ahead in the last call (run_ahead), only its report is left.
+    std::string task_error;
+    const long this_step = clock_.steps + 1;
+    if (ran_ahead_) {
+        ran_ahead_ = false;
+        task_error = std::move(ahead_error_);
+        ahead_error_.clear();
+    } else {
+        neighbours_.count_step();
+        task_error = run_graphs({});
+    }
     const double t_graph = tasks::clock_seconds();
     // The report leaves now; the bookkeeping below runs while it travels.
     post_step_report(task_error);
-    add_node_times();
+    add_node_times(this_step);
     if (trace_)
-        trace_->add_work(clock_.steps + 2, "bookkeeping", t_graph, tasks::clock_seconds());
+        trace_->add_work(this_step + 1, "bookkeeping", t_graph, tasks::clock_seconds());
+    const bool ahead = run_ahead_allowed_ && can_run_ahead();
+    run_ahead_allowed_ = false;
+    if (ahead) {
+        run_ahead(t_graph); // the next step's graph; throws like agree_on_step
+        return;
+    }
     agree_on_step(); // throws on every rank if anything failed on any
     advance_time();
     between_steps();
@@ -348,12 +363,19 @@ void Simulation<D>::step() {
 }
 
 template <int D>
-std::string Simulation<D>::run_graphs() {
+bool Simulation<D>::can_run_ahead() const {
+    // Several ranks (one has no reduction to wait for), a scheme whose step graph has a gated
+    // stage, and Verlet lists that can outlive a step. The same on every rank.
+    return comm_.parallel() && graph_->gate_stage() >= 0 && neighbours_.skin > 0;
+}
+
+template <int D>
+std::string Simulation<D>::run_graphs(const tasks::StepGraph::GatePoll& gate) {
     graph_->inject_receive_delay(receive_delay_);
     try {
         // A throwing task does not stop the graph: its messages still go out, so every rank
         // completes the step and learns of the error in the step's agreement.
-        scheme_->run(*graph_);
+        scheme_->run(*graph_, gate);
     } catch (const std::exception& e) {
         return e.what();
     }
@@ -361,7 +383,7 @@ std::string Simulation<D>::run_graphs() {
 }
 
 template <int D>
-void Simulation<D>::add_node_times() {
+void Simulation<D>::add_node_times(long step) {
     // The stage layout is fixed for a case, so totals carry over when the graph is rebuilt.
     stage_busy_.resize(static_cast<std::size_t>(graph_->stage_count()), 0.0);
     for (int s = 0; s < graph_->stage_count(); ++s)
@@ -376,7 +398,7 @@ void Simulation<D>::add_node_times() {
         if (!trace_)
             trace_ = std::make_unique<tasks::TraceRecorder>(comm_.rank(), stage_names(),
                                                             opts_.trace_max_events);
-        trace_->add_step(clock_.steps + 1, *graph_, between_);
+        trace_->add_step(step, *graph_, between_);
     }
     between_.clear();
 }
@@ -384,6 +406,11 @@ void Simulation<D>::add_node_times() {
 template <int D>
 void Simulation<D>::advance_time() {
     P_.swap_buffers();
+    advance_clock();
+}
+
+template <int D>
+void Simulation<D>::advance_clock() {
     clock_.time += clock_.dt;
     ++clock_.steps;
     clock_.dt_prev = clock_.dt;
@@ -395,6 +422,11 @@ template <int D>
 void Simulation<D>::between_steps() {
     if (comm_.parallel())
         balance_.add_step(clock_.steps, last_busy_);
+    change_layout();
+}
+
+template <int D>
+void Simulation<D>::change_layout() {
     if (neighbours_.expire(disp2_max_)) {
         const auto t0 = std::chrono::steady_clock::now();
         const double t1 = tasks::clock_seconds();

@@ -25,6 +25,10 @@ struct StageRow {
     const char* name;
     tasks::Reach reach;
     std::optional<HaloField> sends;
+    // The first stage that reads what the previous step's agreement decides (dt, the largest
+    // speed): it waits for the main thread's gate, and the stages before it may run ahead
+    // (docs/ARCHITECTURE.md, "Time step").
+    bool gated = false;
 };
 
 // What a scheme needs of the rank to wire a graph's halo exchanges.
@@ -45,7 +49,7 @@ graph_of_rows(const std::vector<StageRow>& rows, std::optional<HaloField> before
               tasks::StepGraph::Body body, const GraphSite& site, HaloFields<D>& halo) {
     std::vector<tasks::StageSpec> specs;
     for (const StageRow& row : rows)
-        specs.push_back({row.name, row.reach});
+        specs.push_back({row.name, row.reach, row.gated});
     tasks::HaloWiring wiring;
     if (site.parallel) {
         halo.exchanges.clear();
@@ -84,7 +88,13 @@ public:
     virtual std::unique_ptr<tasks::StepGraph> build_graph(const GraphSite& site) = 0;
     // One step: the step graph (the last build_graph's), and whatever the scheme runs around
     // it. A throwing task's error is rethrown after every message of the step has completed.
-    virtual void run(tasks::StepGraph& graph) = 0;
+    // `gate` opens the step graph's gated stage (StepGraph::run), if it has one.
+    virtual void run(tasks::StepGraph& graph, const tasks::StepGraph::GatePoll& gate) = 0;
+    // Running ahead: the stages before the gated one may run while the previous step's
+    // agreement is in flight. keep_ahead() saves, for the owned particles, every array those
+    // stages write; restore_ahead() puts it back when the step that ran ahead is discarded.
+    virtual void keep_ahead(std::size_t /*owned*/) {}
+    virtual void restore_ahead(std::size_t /*owned*/) {}
 
     // Projection: the last step's pressure solve and totals over the run (null otherwise).
     [[nodiscard]] virtual const PressureSolveRecord* last_pressure_solve() const { return nullptr; }

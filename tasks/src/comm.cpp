@@ -150,6 +150,16 @@ bool PendingAllGather::active() const {
     return impl_ && impl_->active;
 }
 
+bool PendingAllGather::test() {
+    if (!active())
+        throw std::logic_error("PendingAllGather::test: nothing in flight");
+    if (impl_->request == MPI_REQUEST_NULL)
+        return true;
+    int done = 0;
+    MPI_Test(&impl_->request, &done, MPI_STATUS_IGNORE);
+    return done != 0;
+}
+
 std::vector<Bytes> PendingAllGather::wait() {
     if (!active())
         throw std::logic_error("PendingAllGather::wait: nothing in flight");

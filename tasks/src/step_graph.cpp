@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <stdexcept>
 #include <thread>
 
 namespace sluice::tasks {
@@ -26,6 +27,9 @@ constexpr int kTagBase = 1000; // tags kTagBase + exchange index
 // thread wrote when it built the graph). The edges from the start node order every task after
 // the start of the run anyway; TSan needs to know it before a task has read its slot.
 char run_start_token;
+// The gate's token: released by the main thread when it opens the gate, acquired by the gated
+// stage's nodes (their extra predecessor is the main thread's put).
+char gate_token;
 } // namespace
 
 double clock_seconds() {
@@ -48,7 +52,10 @@ struct StepGraph::Impl {
     // ThreadSanitizer (tasks that happen to run one after the other would look ordered).
     std::atomic<int> running{0};          // tasks executing right now (sets the poll rate)
     std::atomic<std::size_t> finished{0}; // nodes of this run that have completed
-    std::size_t total = 0;                // nodes in the graph
+    // Set by the main thread before it opens the gate; read by the nodes after it (the gate's
+    // edges order them), relaxed like the counters.
+    std::atomic<bool> skip{false};
+    std::size_t total = 0; // nodes in the graph
 
     // ThreadSanitizer's view of the edges (tsan_sync.hpp), by task slot (as records_): a
     // task's own token is &waits_for[slot], and waits_for[slot] lists its predecessors'.
@@ -93,6 +100,18 @@ void StepGraph::guard(const std::function<void()>& f) {
     impl_->node_done();
 }
 
+bool StepGraph::skipped(int stage) const {
+    return gate_stage_ >= 0 && stage >= gate_stage_ && impl_->skip.load(std::memory_order_relaxed);
+}
+
+void StepGraph::open_gate(bool skip) {
+    impl_->skip.store(skip, std::memory_order_relaxed);
+    tsan::release(&gate_token);
+    for (int grp = 0; grp < groups_; ++grp)
+        impl_->nodes[static_cast<std::size_t>(gate_stage_ * groups_ + grp)]->try_put(
+            continue_msg());
+}
+
 void StepGraph::record(std::size_t slot, int stage, int group, int exchange, double t0) {
     TaskRecord& r = records_[slot];
     r.stage = stage;
@@ -112,6 +131,12 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
     const int E = halo_.active() ? static_cast<int>(halo_.exchanges.size()) : 0;
     const std::size_t n = stages_.size() * static_cast<std::size_t>(groups_);
     const std::size_t m = static_cast<std::size_t>(E * P);
+    for (int s = 0; s < stage_count(); ++s)
+        if (stages_[static_cast<std::size_t>(s)].gated) {
+            if (gate_stage_ >= 0)
+                throw std::logic_error("a step graph has at most one gated stage");
+            gate_stage_ = s;
+        }
     records_.assign(n + 2 * m, {});
     send_buf_.assign(m, {});
     recv_buf_.assign(m, {});
@@ -135,13 +160,20 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
         for (int s = 0; s < stage_count(); ++s)
             for (int grp = 0; grp < groups_; ++grp) {
                 const std::size_t slot = static_cast<std::size_t>(s * groups_ + grp);
+                // A gated node has one predecessor more than its edges: the main thread's put.
+                const bool gated = s == gate_stage_;
+                if (gated)
+                    impl_->waits_for[slot].push_back(&gate_token);
                 impl_->nodes.push_back(std::make_unique<Node>(
-                    *g,
+                    *g, gated ? 1 : 0,
                     [this, s, grp, slot](const continue_msg&) {
                         tsan::acquire(&run_start_token);
                         impl_->begin_task(slot);
                         const double t0 = clock_seconds();
-                        guard([&] { body_(s, grp); });
+                        guard([&] {
+                            if (!skipped(s))
+                                body_(s, grp);
+                        });
                         record(slot, s, grp, -1, t0);
                         impl_->end_task(slot);
                     },
@@ -184,8 +216,9 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                         }
                         const double t0 = clock_seconds();
                         guard([&] {
-                            send_buf_[k].clear();
-                            halo_.data->pack(e, p, send_buf_[k]);
+                            send_buf_[k].clear(); // skipped: an empty message
+                            if (!skipped(after))
+                                halo_.data->pack(e, p, send_buf_[k]);
                         });
                         record(n + k, -1, p, e, t0);
                         tsan::release(&send_buf_[k]); // the main thread posts it
@@ -196,11 +229,14 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                 // One predecessor more than the edges: the main thread's "message arrived".
                 impl_->recvs.push_back(std::make_unique<Node>(
                     *g, 1,
-                    [this, e, p, k, n, m](const continue_msg&) {
+                    [this, e, p, k, n, m, after](const continue_msg&) {
                         tsan::acquire(&run_start_token);
                         impl_->begin_task(n + m + k);
                         const double t0 = clock_seconds();
-                        guard([&] { halo_.data->unpack(e, p, recv_buf_[k]); });
+                        guard([&] {
+                            if (after < 0 || !skipped(after))
+                                halo_.data->unpack(e, p, recv_buf_[k]);
+                        });
                         record(n + m + k, -2, p, e, t0);
                         impl_->end_task(n + m + k);
                     },
@@ -251,14 +287,31 @@ StepGraph::~StepGraph() {
     }
 }
 
-void StepGraph::run() {
+void StepGraph::run(const GatePoll& gate) {
     run_begin_ = clock_seconds();
     impl_->finished = 0;
+    impl_->skip.store(false, std::memory_order_relaxed);
     messages_.clear();
-    if (halo_.active())
-        run_with_messages();
-    else
+    if (halo_.active()) {
+        run_with_messages(gate);
+    } else {
+        // No message to drive: the main thread waits for the gate first.
+        bool skip = false;
+        if (gate_stage_ >= 0 && gate) {
+            Gate answer = gate();
+            for (; answer == Gate::wait; answer = gate())
+                std::this_thread::sleep_for(std::chrono::microseconds(20));
+            skip = answer == Gate::skip;
+        }
+        if (gate_stage_ >= 0) {
+            auto open = [&] { open_gate(skip); };
+            if (impl_->arena != nullptr)
+                impl_->arena->execute(open);
+            else
+                open();
+        }
         run_local();
+    }
     run_end_ = clock_seconds();
     if (error_) {
         std::exception_ptr e;
@@ -280,7 +333,7 @@ void StepGraph::run_local() {
         go();
 }
 
-void StepGraph::run_with_messages() {
+void StepGraph::run_with_messages(const GatePoll& gate) {
     const int P = static_cast<int>(halo_.peers.size());
     const int E = static_cast<int>(halo_.exchanges.size());
     const std::size_t m = static_cast<std::size_t>(E * P);
@@ -328,13 +381,26 @@ void StepGraph::run_with_messages() {
     }
     tsan::release(&run_start_token);
     impl_->start->try_put(continue_msg()); // from outside the arena: the workers take it
+    bool gate_open = gate_stage_ < 0;
+    if (!gate_open && !gate) {
+        open_gate(false);
+        gate_open = true;
+    }
 
     std::vector<int> idx(m);
     std::vector<double> arrived(m, -1);
     std::size_t delayed = 0; // arrived but not yet reported (injected delay)
     auto backoff = std::chrono::microseconds(50);
-    while (received < m || sent < m || delayed > 0) {
+    while (received < m || sent < m || delayed > 0 || !gate_open) {
         bool progress = false;
+        if (!gate_open) {
+            const Gate answer = gate();
+            if (answer != Gate::wait) {
+                open_gate(answer == Gate::skip);
+                gate_open = true;
+                progress = true;
+            }
+        }
         int k = 0;
         while (impl_->ready.try_pop(k)) {
             tsan::acquire(&send_buf_[static_cast<std::size_t>(k)]);

@@ -35,8 +35,11 @@ struct NeighbourLists {
     // the positions of the last rebuild: whether the lists are rebuilt before the next step.
     // They stay valid while every particle is within skin/2 of where they were built.
     bool expire(Real disp2_max) {
-        rebuilt = skin <= 0 || disp2_max > 0.25 * skin * skin;
+        rebuilt = expired(disp2_max);
         return rebuilt;
+    }
+    [[nodiscard]] bool expired(Real disp2_max) const {
+        return skin <= 0 || disp2_max > 0.25 * skin * skin;
     }
 };
 

@@ -91,6 +91,13 @@ public:
     // or InternalError (a task threw) on every rank together, before the failing step's state
     // is swapped in.
     void step();
+    // Before step(): the caller will not read the state after this step (no probe, snapshot
+    // or checkpoint due, another step follows unless the agreed requests say otherwise), so
+    // the next step's graph may start while this step's agreement travels (docs/
+    // ARCHITECTURE.md, "Time step"). The same on every rank. Reset by each step().
+    void allow_run_ahead(bool allow) { run_ahead_allowed_ = allow; }
+    // The time after the next step (the clock's t + dt, as the step will add it).
+    [[nodiscard]] double next_time() const { return clock_.time + clock_.dt; }
 
     // Everything but the particles that a checkpoint needs to continue bitwise.
     [[nodiscard]] SolverState solver_state() const;
@@ -157,13 +164,24 @@ public:
 
     // Seconds spent in rebinning and re-decomposition between steps, summed over the run.
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }
+    // Steps whose graph ran ahead of the previous step's agreement, and of them those
+    // discarded (a failure, a rebuild, a rebalance or a request) and run again.
+    [[nodiscard]] long steps_run_ahead() const { return ahead_steps_; }
+    [[nodiscard]] long steps_run_ahead_discarded() const { return ahead_discarded_; }
 
 private:
     // The parts of step(), in order.
-    std::string run_graphs(); // the scheme's graphs; a task's error, or empty
-    void add_node_times();    // per stage and group, into the profile (and the trace)
-    void advance_time();      // buffers swapped, t and dt advance
-    void between_steps();     // the lists rebuilt, or the ranks rebalanced, when due
+    // the scheme's graphs (`gate` opens the step graph's gated stage); a task's error, or empty
+    std::string run_graphs(const tasks::StepGraph::GatePoll& gate);
+    void add_node_times(long step); // per stage and group, into the profile (and the trace)
+    void advance_time();            // buffers swapped, t and dt advance
+    void advance_clock();           // t and dt advance (advance_time without the swap)
+    void between_steps();           // the lists rebuilt, or the ranks rebalanced, when due
+    void change_layout();           // between_steps after the balancer's judgement
+    // The next step's graph run while this step's agreement travels; the agreement completes
+    // inside it (step_agreement.cpp).
+    void run_ahead(double t_graph);
+    [[nodiscard]] bool can_run_ahead() const;
     void rebin_and_decompose();
     void rebuild();
     // New cut points between ranks, gathered and decided identically on every rank.
@@ -179,6 +197,15 @@ private:
     // rank if any failed.
     void post_step_report(const std::string& task_error);
     void agree_on_step();
+    // The two halves of agree_on_step: the reports reduced (the agreed values set unless a
+    // rank failed; returns the first failing rank and its StepFailure, or -1), and the
+    // failure raised on every rank (collective: the failing rank's message is broadcast).
+    struct StepFailed {
+        int rank = -1;
+        std::int64_t kind = 0;
+    };
+    StepFailed reduce_reports(const std::vector<tasks::Bytes>& all);
+    [[noreturn]] void raise_failure(const StepFailed& failed, const std::string& own_message);
     void build_graph();
 
     // The case's scheme (numerics.scheme), given the units it uses of the state below.
@@ -227,6 +254,10 @@ private:
     double receive_delay_ = 0;
     unsigned requests_local_ = 0, requests_agreed_ = 0;
     std::optional<PendingStepReport> report_; // between post_step_report and agree_on_step
+    bool run_ahead_allowed_ = false;
+    bool ran_ahead_ = false;  // the next step's graph has run (its agreement is to come)
+    std::string ahead_error_; // a task's error in that graph
+    long ahead_steps_ = 0, ahead_discarded_ = 0;
 
     // Balancer: this rank measures and moves, the policy decides.
     std::vector<double> group_busy_; // per group, summed since the graph was built

@@ -30,7 +30,10 @@ public:
     }
     void start() override { init_projection(); }
     std::unique_ptr<tasks::StepGraph> build_graph(const GraphSite& site) override;
-    void run(tasks::StepGraph& graph) override { run_projection(graph); }
+    // Its step graph has no gated stage (the predictor reads dt in the first stage).
+    void run(tasks::StepGraph& graph, const tasks::StepGraph::GatePoll& /*gate*/) override {
+        run_projection(graph);
+    }
     [[nodiscard]] const PressureSolveRecord* last_pressure_solve() const override {
         return &proj_->last;
     }

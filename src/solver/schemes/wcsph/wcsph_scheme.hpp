@@ -32,7 +32,9 @@ public:
         return sluice::cfl_sound_speed(false, case_.cfg.sound_speed);
     }
     std::unique_ptr<tasks::StepGraph> build_graph(const GraphSite& site) override;
-    void run(tasks::StepGraph& graph) override;
+    void run(tasks::StepGraph& graph, const tasks::StepGraph::GatePoll& gate) override;
+    void keep_ahead(std::size_t owned) override;
+    void restore_ahead(std::size_t owned) override;
 
 private:
     using StageKind = WcsphStage;
@@ -63,6 +65,8 @@ private:
     DensityDiffusionParams<D> diffusion_;
     bool density_gradient_ = false; // the density stage computes the renormalised gradient
     std::vector<StageKind> stage_kinds_;
+    // What the stages before the gated one write (keep_ahead), owned particles only.
+    Particles<D> kept_;
     std::unique_ptr<HaloFields<D>> halo_;
 };
 

@@ -12,6 +12,7 @@
 #include "sluice/physics/riemann.hpp"
 #include "sluice/physics/shifting.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <stdexcept>
@@ -71,6 +72,12 @@ std::vector<typename WcsphScheme<D>::Stage> WcsphScheme<D>::stage_table() const 
     rows.push_back({{"kick", Reach::self, velocity}, StageKind::kick});
     rows.push_back({{"drift", continuity_ ? Reach::neighbourhood : Reach::self, std::nullopt},
                     StageKind::drift});
+    // The first stage that reads the clock's agreed values: the kick (dt), or the
+    // acceleration when it computes the shifting displacement (u_max and dt). The stages
+    // before it read only the state, so they may run ahead of the previous step's agreement.
+    const StageKind gated = case_.cfg.shifting > 0 ? StageKind::accel : StageKind::kick;
+    for (Stage& r : rows)
+        r.row.gated = r.kind == gated;
     return rows;
 }
 
@@ -88,9 +95,52 @@ std::unique_ptr<tasks::StepGraph> WcsphScheme<D>::build_graph(const GraphSite& s
 }
 
 template <int D>
-void WcsphScheme<D>::run(tasks::StepGraph& graph) {
+void WcsphScheme<D>::run(tasks::StepGraph& graph, const tasks::StepGraph::GatePoll& gate) {
     halo_->assign_cells = neighbours_.rebuilt;
-    graph.run();
+    graph.run(gate);
+}
+
+// The arrays that the stages before the gated one write for owned particles: density (ρ with
+// summation, ∇ρ, p, p/ρ², m/ρ), walls (the wall particles' p, ρ, mass, v_bc) and, when it
+// runs before the gate (no shifting), the acceleration.
+template <int D>
+void WcsphScheme<D>::keep_ahead(std::size_t owned) {
+    auto keep = [owned](const auto& from, auto& to) {
+        to.assign(from.begin(), from.begin() + static_cast<std::ptrdiff_t>(owned));
+    };
+    keep(P_.rho, kept_.rho);
+    keep(P_.p, kept_.p);
+    keep(P_.p_over_rho2, kept_.p_over_rho2);
+    keep(P_.volume, kept_.volume);
+    if (density_gradient_)
+        keep(P_.grad_rho, kept_.grad_rho);
+    if (case_.cfg.walls == WallModel::dummy) {
+        keep(P_.mass, kept_.mass);
+        keep(P_.v_bc, kept_.v_bc);
+    }
+    if (case_.cfg.shifting <= 0)
+        keep(P_.a, kept_.a);
+}
+
+template <int D>
+void WcsphScheme<D>::restore_ahead(std::size_t owned) {
+    auto restore = [owned](const auto& from, auto& to) {
+        if (from.size() != owned)
+            throw std::logic_error("restore_ahead: not what keep_ahead kept");
+        std::copy(from.begin(), from.end(), to.begin());
+    };
+    restore(kept_.rho, P_.rho);
+    restore(kept_.p, P_.p);
+    restore(kept_.p_over_rho2, P_.p_over_rho2);
+    restore(kept_.volume, P_.volume);
+    if (density_gradient_)
+        restore(kept_.grad_rho, P_.grad_rho);
+    if (case_.cfg.walls == WallModel::dummy) {
+        restore(kept_.mass, P_.mass);
+        restore(kept_.v_bc, P_.v_bc);
+    }
+    if (case_.cfg.shifting <= 0)
+        restore(kept_.a, P_.a);
 }
 
 template <int D>

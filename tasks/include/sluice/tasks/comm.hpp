@@ -45,6 +45,8 @@ public:
     [[nodiscard]] bool active() const;
     // Completes it; every rank's contribution in rank order.
     [[nodiscard]] std::vector<Bytes> wait();
+    // Whether it has completed (MPI_Test; then wait() returns at once).
+    [[nodiscard]] bool test();
 
 private:
     friend class Comm;

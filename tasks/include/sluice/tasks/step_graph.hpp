@@ -38,6 +38,10 @@ enum class Reach { self, neighbourhood };
 struct StageSpec {
     std::string name;
     Reach reach = Reach::neighbourhood; // what the stage needs of the previous stage
+    // Its nodes also wait for the main thread's gate (at most one gated stage per graph):
+    // what runs before it may start while the main thread still waits for something else
+    // (StepGraph::run's `gate`).
+    bool gated = false;
 };
 
 struct ExchangeSpec {
@@ -97,10 +101,21 @@ public:
     StepGraph(const StepGraph&) = delete;
     StepGraph& operator=(const StepGraph&) = delete;
 
+    // What the main thread's gate poll answers: keep the gated stage waiting, open it, or open
+    // it with every body from the gated stage on skipped (their nodes still complete, and
+    // their exchanges still send and receive a message, an empty one, so that the peers
+    // finish the run as usual; the receives of those exchanges are not unpacked).
+    enum class Gate { wait, open, skip };
+    using GatePoll = std::function<Gate()>;
+
     // Runs every node once, in dependency order, and returns when all have finished and every
     // message of the step is complete. An exception thrown by a node body is rethrown here,
     // after the step's messages have all completed (so no peer is left waiting).
-    void run();
+    // With a gated stage, `gate` is called by the main thread (between its polls of the
+    // messages) until it answers open or skip; without `gate` the gate opens at once.
+    void run(const GatePoll& gate = {});
+    // The gated stage, or -1.
+    [[nodiscard]] int gate_stage() const { return gate_stage_; }
 
     [[nodiscard]] int stage_count() const { return static_cast<int>(stages_.size()); }
     [[nodiscard]] int group_count() const { return groups_; }
@@ -125,7 +140,9 @@ public:
 
 private:
     void run_local();
-    void run_with_messages();
+    void run_with_messages(const GatePoll& gate);
+    void open_gate(bool skip);
+    [[nodiscard]] bool skipped(int stage) const;
     void record(std::size_t slot, int stage, int group, int exchange, double t0);
     void guard(const std::function<void()>& f);
 
@@ -141,6 +158,7 @@ private:
     std::vector<Bytes> send_buf_, recv_buf_; // per (exchange, peer)
     double run_begin_ = 0, run_end_ = 0;
     double receive_delay_ = 0;
+    int gate_stage_ = -1;
     std::mutex error_mutex_;
     std::exception_ptr error_;
 };
