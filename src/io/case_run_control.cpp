@@ -51,6 +51,7 @@ void read_runtime(const Section& s, CaseConfig& c) {
     c.balance_cost = s.choice("balance_cost", c.balance_cost, kBalanceCost);
     c.initial_decomposition =
         s.choice("initial_decomposition", c.initial_decomposition, kInitialDecomposition);
+    c.run_ahead = s.boolean("run_ahead").value_or(c.run_ahead);
 }
 
 void read_checkpoint_table(const Section& s, CaseConfig& c) {

@@ -219,6 +219,8 @@ const KeySpec kKeys[] = {
      "What the balancer equalises: \"time\" (measured task time per cell group) or \"particles\"."},
     {"runtime", "initial_decomposition", "string", "", "\"balanced\"", one_of({"balanced", "key-range"}), Applies::any, "",
      "How ranks split the curve at start: \"balanced\" (equal particle counts) or \"key-range\" (equal key ranges; naive and usually unbalanced, for testing the balancer)."},
+    {"runtime", "run_ahead", "boolean", "", "false", {}, Applies::wcsph, "",
+     "On several ranks, start the next step's graph (density, walls and, without shifting, accelerations) while the step's time-step agreement is in flight, with kick held until it arrives; a failure, rebuild, rebalance or request discards the early work and the step runs again. Results are byte-identical either way. Off by default: no speed-up has been measured yet."},
     {"checkpoint", "every_steps", "integer", "steps", "0", closed(0, 1000000000), Applies::any, "",
      "Write <results>/checkpoint.h5 after every this many steps (counted from the start of the run); 0 = off."},
     {"checkpoint", "every_minutes", "number", "minutes", "30", closed(0, 1e6), Applies::any, "",

@@ -222,6 +222,10 @@ struct CaseConfig {
     int rebalance_every = 0;
     BalanceCost balance_cost = BalanceCost::time;
     InitialDecomposition initial_decomposition = InitialDecomposition::balanced;
+    // On several ranks, start the next step's graph before the step's agreement has arrived
+    // (docs/ARCHITECTURE.md, "Time step"). Off by default: byte-identical either way, and no
+    // speed-up has been measured yet (perf/strong_scaling/README.md, session 29).
+    bool run_ahead = false;
 
     // [checkpoint]: <results>/checkpoint.h5 every N steps and/or every M minutes of wall time
     // (0 = off), besides the one written when a run is asked to stop.
