@@ -171,8 +171,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             const bool last = !(t_next < cfg.end_time * (1 - 1e-12));
             const bool checkpoint = cfg.checkpoint_every_steps > 0 &&
                                     (sim.steps() + 1) % cfg.checkpoint_every_steps == 0;
-            sim.allow_run_ahead(cfg.run_ahead && !last && !checkpoint &&
-                                outputs.quiet_at(t_next));
+            sim.allow_run_ahead(cfg.run_ahead && !last && !checkpoint && outputs.quiet_at(t_next));
         }
         try {
             sim.step();
