@@ -137,14 +137,19 @@ TEST_CASE("a task failing on one rank stops every rank in that step, before its 
     }
 }
 
+// The case with summation density (and so without delta-SPH).
+static CaseConfig with_summation(CaseConfig cfg) {
+    cfg.density = DensityScheme::summation;
+    cfg.delta_sph = 0;
+    return cfg;
+}
+
 TEST_CASE("running the next step ahead of the agreement changes no result") {
     SUBCASE("continuity, delta-SPH, periodic flow across ranks (rebuilds)") {
         compare_running_ahead(read_case(data("uniform_flow_periodic.toml")), 24);
     }
     SUBCASE("summation density, shifting (gated at the acceleration)") {
-        CaseConfig cfg = read_case(data("uniform_flow_periodic.toml"));
-        cfg.density = DensityScheme::summation;
-        cfg.delta_sph = 0;
+        CaseConfig cfg = with_summation(read_case(data("uniform_flow_periodic.toml")));
         cfg.shifting = 4;
         compare_running_ahead(cfg, 24);
     }
@@ -152,10 +157,7 @@ TEST_CASE("running the next step ahead of the agreement changes no result") {
         compare_running_ahead(read_case(data("probe_kinds_2d.toml")), 16);
     }
     SUBCASE("dummy walls, summation density") {
-        CaseConfig cfg = read_case(data("probe_kinds_2d.toml"));
-        cfg.density = DensityScheme::summation;
-        cfg.delta_sph = 0;
-        compare_running_ahead(cfg, 16);
+        compare_running_ahead(with_summation(read_case(data("probe_kinds_2d.toml"))), 16);
     }
 }
 

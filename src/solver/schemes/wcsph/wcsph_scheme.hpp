@@ -65,6 +65,9 @@ private:
     DensityDiffusionParams<D> diffusion_;
     bool density_gradient_ = false; // the density stage computes the renormalised gradient
     std::vector<StageKind> stage_kinds_;
+    // f(live, kept) for each array the stages before the gated one write.
+    template <class F>
+    void each_ahead_array(F&& f);
     // What the stages before the gated one write (keep_ahead), owned particles only.
     Particles<D> kept_;
     std::unique_ptr<HaloFields<D>> halo_;

@@ -102,45 +102,39 @@ void WcsphScheme<D>::run(tasks::StepGraph& graph, const tasks::StepGraph::GatePo
 
 // The arrays that the stages before the gated one write for owned particles: density (ρ with
 // summation, ∇ρ, p, p/ρ², m/ρ), walls (the wall particles' p, ρ, mass, v_bc) and, when it
-// runs before the gate (no shifting), the acceleration.
+// runs before the gate (no shifting), the acceleration. `f(live, kept)` for each; one list,
+// so that keep_ahead and restore_ahead cannot disagree on it.
 template <int D>
-void WcsphScheme<D>::keep_ahead(std::size_t owned) {
-    auto keep = [owned](const auto& from, auto& to) {
-        to.assign(from.begin(), from.begin() + static_cast<std::ptrdiff_t>(owned));
-    };
-    keep(P_.rho, kept_.rho);
-    keep(P_.p, kept_.p);
-    keep(P_.p_over_rho2, kept_.p_over_rho2);
-    keep(P_.volume, kept_.volume);
+template <class F>
+void WcsphScheme<D>::each_ahead_array(F&& f) {
+    f(P_.rho, kept_.rho);
+    f(P_.p, kept_.p);
+    f(P_.p_over_rho2, kept_.p_over_rho2);
+    f(P_.volume, kept_.volume);
     if (density_gradient_)
-        keep(P_.grad_rho, kept_.grad_rho);
+        f(P_.grad_rho, kept_.grad_rho);
     if (case_.cfg.walls == WallModel::dummy) {
-        keep(P_.mass, kept_.mass);
-        keep(P_.v_bc, kept_.v_bc);
+        f(P_.mass, kept_.mass);
+        f(P_.v_bc, kept_.v_bc);
     }
     if (case_.cfg.shifting <= 0)
-        keep(P_.a, kept_.a);
+        f(P_.a, kept_.a);
+}
+
+template <int D>
+void WcsphScheme<D>::keep_ahead(std::size_t owned) {
+    each_ahead_array([owned](const auto& live, auto& kept) {
+        kept.assign(live.begin(), live.begin() + static_cast<std::ptrdiff_t>(owned));
+    });
 }
 
 template <int D>
 void WcsphScheme<D>::restore_ahead(std::size_t owned) {
-    auto restore = [owned](const auto& from, auto& to) {
-        if (from.size() != owned)
+    each_ahead_array([owned](auto& live, const auto& kept) {
+        if (kept.size() != owned)
             throw std::logic_error("restore_ahead: not what keep_ahead kept");
-        std::copy(from.begin(), from.end(), to.begin());
-    };
-    restore(kept_.rho, P_.rho);
-    restore(kept_.p, P_.p);
-    restore(kept_.p_over_rho2, P_.p_over_rho2);
-    restore(kept_.volume, P_.volume);
-    if (density_gradient_)
-        restore(kept_.grad_rho, P_.grad_rho);
-    if (case_.cfg.walls == WallModel::dummy) {
-        restore(kept_.mass, P_.mass);
-        restore(kept_.v_bc, P_.v_bc);
-    }
-    if (case_.cfg.shifting <= 0)
-        restore(kept_.a, P_.a);
+        std::copy(kept.begin(), kept.end(), live.begin());
+    });
 }
 
 template <int D>
