@@ -19,7 +19,8 @@ preconditioner named), "fixed-jacobi" (both old settings: the scheme as it was b
 issue 22); "ilu0-tol6", "ilu0-tol5", "jacobi-tol6", "jacobi-tol5" (a looser
 projection.tolerance, 1e-6 or 1e-5 instead of the case's 1e-8); "shift0.05", "shift0.2", "shift0.5"
 (particle shifting, projection.shifting = 0.05, 0.2 or 0.5); "two-level", "two-level-tol6"
-(projection.preconditioner = "two_level", at the case's 1e-8 or at 1e-6).
+(projection.preconditioner = "two_level", at the case's 1e-8 or at 1e-6); "hydrostatic"
+(projection.correction_reference = "hydrostatic").
 
 Usage: perf/projection/time_to_solution.py [--dx 0.01] [--end 1.0] [--rounds 1]
            [--variants adaptive,fixed,jacobi,fixed-jacobi] [--threads 1] [--sluice PATH]
@@ -68,6 +69,9 @@ VARIANTS = {
     "shift0.05": ["projection.shifting=0.05"],
     "shift0.2": ["projection.shifting=0.2"],
     "shift0.5": ["projection.shifting=0.5"],
+    # P7's reference pressure (docs/PROJECTION.md, P7).
+    "hydrostatic": ['projection.correction_reference="hydrostatic"'],
+    "hydrostatic-gamma0": ['projection.correction_reference="hydrostatic"', "projection.gamma=0"],
 }
 
 

@@ -37,6 +37,10 @@ const std::vector<std::pair<std::string, PressurePreconditioner>> kPreconditione
 const std::vector<std::pair<std::string, CorrectionGradient>> kCorrectionGradients = {
     {"second_order", CorrectionGradient::second_order},
     {"first_order", CorrectionGradient::first_order}};
+const std::vector<std::pair<std::string, CorrectionReference>> kCorrectionReferences = {
+    {"minimum", CorrectionReference::minimum}, {"hydrostatic", CorrectionReference::hydrostatic}};
+const std::vector<std::pair<std::string, DeviationWeight>> kDeviationWeights = {
+    {"pnu_mps", DeviationWeight::pnu_mps}, {"smooth", DeviationWeight::smooth}};
 const std::vector<std::pair<std::string, NeighbourPolicy>> kNeighbourPolicies = {
     {"radius", NeighbourPolicy::radius}, {"convex-hull", NeighbourPolicy::convex_hull}};
 const std::vector<std::pair<std::string, bool>> kHullPoints = {{"vertices", false},
@@ -162,6 +166,9 @@ void read_projection(const Section& s, CaseConfig& c) {
     p.surface_density_ratio = s.number("surface_density_ratio", p.surface_density_ratio);
     p.correction_gradient =
         s.choice("correction_gradient", p.correction_gradient, kCorrectionGradients);
+    p.correction_reference =
+        s.choice("correction_reference", p.correction_reference, kCorrectionReferences);
+    p.deviation_weight = s.choice("deviation_weight", p.deviation_weight, kDeviationWeights);
     p.fluid_collision = s.boolean("fluid_collision").value_or(p.fluid_collision);
     p.shifting = s.number("shifting", p.shifting);
 }

@@ -32,6 +32,39 @@ TEST_CASE("stabilised gradient: tension clamped, zero pressures are no reference
     CHECK(gradient_reference(100, 40) == 40.0);
 }
 
+TEST_CASE("hydrostatic reference: a hydrostatic field is its own reference (P7)") {
+    // Still water, g = (0, -9.81), rho0 = 1000, p_i = 500 Pa at y_i; a neighbour dy above has
+    // p_i - rho0 g dy, one below p_i + rho0 g dy: each offers p_i, so the reference is p_i and
+    // the stabilised gradient is the plain (exact) one.
+    const double rho_g = 1000 * 9.81, dy = 0.01;
+    const double above = hydrostatic_gradient_reference(500, 500 - rho_g * dy, rho_g * -dy);
+    const double below = hydrostatic_gradient_reference(500, 500 + rho_g * dy, rho_g * dy);
+    CHECK(above == doctest::Approx(500).epsilon(1e-12));
+    CHECK(below == doctest::Approx(500).epsilon(1e-12));
+    // A neighbour below at less than hydrostatic pressure is a reference (the repulsion acts on
+    // the departure from hydrostatics); surface neighbours and tension are not.
+    CHECK(hydrostatic_gradient_reference(500, 550, rho_g * dy) ==
+          doctest::Approx(550 - rho_g * dy));
+    CHECK(hydrostatic_gradient_reference(500, 0, rho_g * dy) == 500.0);
+    CHECK(hydrostatic_gradient_reference(500, -3, -rho_g * dy) == 500.0);
+    // Under a free surface the reference stays in [0, p'_i]; with a free level it is not clamped.
+    CHECK(clamp_gradient_reference(-20) == 0.0);
+    CHECK(clamp_gradient_reference(-20, PressureLevel::free) == -20.0);
+}
+
+TEST_CASE("wall pressure in P7: floored at the hydrostatic continuation, never above 0") {
+    const double rho_g = 1000 * 9.81, dy = 0.01;
+    // A surface particle (p' = 0) beside a dry wall particle dy above it: the wall's
+    // extrapolated -rho0 g dy is kept, so the field stays linear across the surface.
+    CHECK(wall_gradient_pressure(-rho_g * dy, 0, -rho_g * dy) == doctest::Approx(-rho_g * dy));
+    // Tension extrapolated into the floor below a surge front is clamped as before.
+    CHECK(wall_gradient_pressure(-5000, 0, rho_g * dy) == 0.0);
+    // A deeper particle: the continuation is positive, so the floor is 0.
+    CHECK(wall_gradient_pressure(-30, 200, -rho_g * dy) == 0.0);
+    // Positive wall pressures pass unchanged.
+    CHECK(wall_gradient_pressure(700, 200, rho_g * dy) == 700.0);
+}
+
 TEST_CASE("wall collision removes only the approaching velocity within the distance") {
     const Real d = 0.008;
     const Vec<2> wall(0.005, 0); // x_wall - x_fluid

@@ -123,9 +123,12 @@ int check_hydrostatic_step(const std::string& solver, double relaxation = 1.5,
                 speed, speed / (g * *cfg.fixed_dt));
     CHECK(rec->residual <= 2e-10);
     CHECK(worst < 1e-8);
-    // u* = g dt is cancelled by -dt/rho grad p except where the stabilised gradient's
-    // repulsion term acts (one-sided stencils below the surface; docs/PROJECTION.md).
-    CHECK(speed < 0.5 * g * *cfg.fixed_dt);
+    // u* = g dt is cancelled by -dt/rho grad p everywhere: with the hydrostatic reference of
+    // P7 (the default) the stabilised gradient is exact for the hydrostatic field, on the
+    // one-sided stencils below the surface and beside the walls too (docs/PROJECTION.md, P7;
+    // 1e-14 to 1e-11 m/s measured). With the minimum reference the top rows kept up to
+    // 0.42 g dt.
+    CHECK(speed < 1e-6 * g * *cfg.fixed_dt);
     if (record != nullptr)
         *record = *rec;
     return rec->iterations;

@@ -3,13 +3,16 @@
 // resolution, dx = 0.02 m (400 fluid particles), to 2 s: the temporal noise (standard deviation
 // of the bottom-centre probe, sampled every 0.01 s over 1-2 s, as
 // perf/projection/hydrostatic_noise.sh) with shifting must stay below a guard that the run
-// without shifting exceeds (measured 30.4 and 44.4 Pa; both are printed), and the mean within
-// 3 % of rho0 g (H - y_probe) (-2.1 % with shifting, -2.5 % without at this resolution; the
-// probe is one dx above the bottom). The full-resolution figures are in
-// perf/projection/README.md. The guard was calibrated with the Jacobi preconditioner, which the
-// test names: with the two-level one (the default since session 28) the same runs gave 45.0 Pa
-// without and 38.6 Pa with shifting, so shifting still lowers the noise there, by less; a single
-// 1 s window of 100 samples at this resolution moves with the solver's rounding.
+// without shifting exceeds (both are printed), and the mean within 4.5 % of rho0 g (H - y_probe).
+// The full-resolution figures are in perf/projection/README.md. The Jacobi preconditioner is
+// named, as when the guard was first calibrated (a single 1 s window of 100 samples at this
+// resolution moves with the solver's rounding).
+// Since session 30 (the hydrostatic reference of P7 and the smooth weight of P3, the defaults)
+// the runs gave 14.9 Pa without and 1.96 Pa with shifting, means -3.50 % and -3.63 %: the free
+// surface's p = 0 sits on the top particles' centres, half a spacing below the water's surface,
+// which costs rho0 g dx/2 = 2.6 % of the probe's pressure at this dx; before, with the minimum
+// reference, 30.4-45.0 Pa without and 38.6 with (two-level) and means -2.1 % / -2.5 %, the
+// column's spurious expansion hiding the half spacing (docs/PROJECTION.md, P3 and P7).
 #include "sluice/physics/probes.hpp"
 #include "sluice/solver/simulation.hpp"
 #include "validation_support.hpp"
@@ -66,7 +69,7 @@ TankNoise still_tank(const std::string& shifting) {
 
 TEST_CASE("Projection scheme, still tank at dx = 0.02: shifting lowers the pressure noise") {
     // The guard lies between the two measured values (see the printout).
-    constexpr double kGuard = 37.0;
+    constexpr double kGuard = 6.0;
     const TankNoise off = still_tank("0");
     const TankNoise on = still_tank("0.2");
     std::printf("projection still tank, dx = 0.02 m, 1-2 s: p_ref = %.1f Pa; without shifting "
@@ -76,5 +79,5 @@ TEST_CASE("Projection scheme, still tank at dx = 0.02: shifting lowers the press
                 100 * (on.mean / on.p_ref - 1), on.noise, kGuard);
     CHECK(on.noise < kGuard);
     CHECK(off.noise > kGuard); // the guard catches a run without shifting
-    CHECK(std::abs(on.mean - on.p_ref) < 0.03 * on.p_ref);
+    CHECK(std::abs(on.mean - on.p_ref) < 0.045 * on.p_ref);
 }

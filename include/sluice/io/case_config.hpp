@@ -32,6 +32,10 @@ enum class PressureSolver { bicgstab, sor };
 enum class PressurePreconditioner { jacobi, block_lu, block_ilu0, two_level };
 // Gradient of the projection scheme's velocity correction (docs/PROJECTION.md, P7).
 enum class CorrectionGradient { second_order, first_order };
+// Reference pressure of P7's stabilised gradient (docs/PROJECTION.md, P7).
+enum class CorrectionReference { minimum, hydrostatic };
+// Weight of the number density in the density-deviation source term (docs/PROJECTION.md, P3).
+enum class DeviationWeight { pnu_mps, smooth };
 enum class DensityScheme { summation, continuity };
 // How WCSPH dissipates: artificial viscosity + delta-SPH, or a Riemann solver per pair.
 enum class Dissipation { artificial, riemann };
@@ -129,6 +133,8 @@ struct ProjectionSettings {
     double surface_diameter_over_dx = 2.1; // Dilts arc circle (seed 004: 2.1 l0)
     double surface_density_ratio = 0;      // beta: also surface when n < beta n0 (0 = off)
     CorrectionGradient correction_gradient = CorrectionGradient::second_order;
+    CorrectionReference correction_reference = CorrectionReference::hydrostatic;
+    DeviationWeight deviation_weight = DeviationWeight::smooth;
     bool fluid_collision = true; // Koshizuka-type collision of fluid pairs closer than 0.8 dx
     double shifting = 0;         // Fickian shifting, D = A h^2 per step (0 = off; Lind et al. 2012)
 

@@ -74,6 +74,38 @@ inline Real gradient_reference(Real current, Real p_neighbour,
                                                            : current;
 }
 
+// P7 with the hydrostatic reference (projection.correction_reference = "hydrostatic";
+// docs/PROJECTION.md, P7): each positive neighbour offers q_j = p_j - rho0 g.(x_j - x_i), its
+// pressure less the hydrostatic difference between x_j and x_i, so that in a hydrostatic field
+// every q_j equals p_i, the reference is p_i and the gradient is the WMLS gradient of p, exact
+// on one-sided stencils too; the repulsion then acts on the departure from hydrostatics only.
+// rho0_g_dot_offset: rho0 g.(x_j - x_i).
+inline Real hydrostatic_gradient_reference(Real current, Real p_neighbour, Real rho0_g_dot_offset,
+                                           PressureLevel level = PressureLevel::surface) {
+    return p_neighbour > 0 || level == PressureLevel::free
+               ? std::min(current, p_neighbour - rho0_g_dot_offset)
+               : current;
+}
+// The reference stays in [0, p'_i] under a free surface, as the minimum's does: a neighbour
+// below i at less than hydrostatic pressure would otherwise give a negative reference, and a
+// surface particle (p'_i = 0) would be pushed off its neighbours below.
+inline Real clamp_gradient_reference(Real reference, PressureLevel level = PressureLevel::surface) {
+    return level == PressureLevel::free ? reference : std::max(reference, Real(0));
+}
+
+// P7 with the hydrostatic reference: a wall particle's pressure as fluid particle i's correction
+// reads it. Adami's extrapolation (P6) continues the hydrostatic field into the wall particles
+// above the free surface, where it is negative; clamped at 0 there, it kinks the field beside a
+// wall, the fitted gradient of a surface particle falls short of rho0 g, and the particle sinks
+// (the still tank's corner particles sank by ~1 dx in 0.25 s, and the surface agitation spread
+// from them; docs/PROJECTION.md, P7). The wall's pressure is floored at the hydrostatic
+// continuation of i's own (clamped) pressure instead, and never above 0: a negative wall
+// pressure extrapolated from tension in the fluid stays clamped (unclamped, it drew the dam
+// break's surge front into the floor at 0.26 s). rho0_g_dot_offset: rho0 g.(x_wall - x_i).
+inline Real wall_gradient_pressure(Real p_wall, Real p_i_clamped, Real rho0_g_dot_offset) {
+    return std::max(p_wall, std::min(Real(0), p_i_clamped + rho0_g_dot_offset));
+}
+
 // P7.
 template <int D>
 Vec<D> corrected_velocity(const Vec<D>& u_star, const Vec<D>& grad_p, Real rho0, Real dt) {

@@ -80,6 +80,7 @@ template <int D>
 struct ProjectionData {
     // Per particle (owned and halo).
     std::vector<Vec<D>> u_star;
+    // number_density: n_i of P3's density-deviation term, with deviation_weight.
     std::vector<Real> bhat, number_density, y;
     std::vector<PpeRow> row;
     // Per owned particle: solver vectors (x is Particles::p).
@@ -114,12 +115,14 @@ struct ProjectionData {
     } extra;
     bool failed = false; // a task of this step threw: later stages do nothing
 
-    Real re = 0;          // WMLS influence radius (the kernel support)
-    Real n0 = 0;          // particle number density of the full lattice
-    Real lattice_sum = 0; // S = sum_j L_ij of the full lattice
+    Real re = 0;           // WMLS influence radius (the kernel support)
+    Real n0 = 0;           // particle number density of the full lattice (weight below)
+    Real n0_deviation = 0; // the same with the density-deviation term's weight (P3)
+    Real lattice_sum = 0;  // S = sum_j L_ij of the full lattice
     Real surface_diameter = 0;
-    Real collision_distance = 0; // wall and fluid-fluid collisions (docs/PROJECTION.md)
-    LsWeight weight = LsWeight::pnu_mps;
+    Real collision_distance = 0;         // wall and fluid-fluid collisions (docs/PROJECTION.md)
+    LsWeight weight = LsWeight::pnu_mps; // the WMLS fits' and n0's
+    LsWeight deviation_weight = LsWeight::pnu_mps; // projection.deviation_weight (P3)
     OperatorSelections selections; // [neighbours.<operator>] (all radius by default)
 
     PressureSolveRecord last; // the last step's solve

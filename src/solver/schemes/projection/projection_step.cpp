@@ -90,9 +90,14 @@ void ProjectionScheme<D>::init_projection() {
     d.collision_distance = Real(wall_collision_distance_over_dx * case_.cfg.dx);
     d.selections = {case_.cfg.neighbours.gradient, case_.cfg.neighbours.laplacian,
                     case_.cfg.neighbours.free_surface};
+    d.deviation_weight = case_.cfg.projection.deviation_weight == DeviationWeight::smooth
+                             ? LsWeight::smooth
+                             : LsWeight::pnu_mps;
     const std::vector<Vec<D>> lattice = lattice_offsets<D>(Real(case_.cfg.dx), d.re);
-    for (const Vec<D>& o : lattice)
+    for (const Vec<D>& o : lattice) {
         d.n0 += ls_weight(o.norm(), d.re, d.weight);
+        d.n0_deviation += ls_weight(o.norm(), d.re, d.deviation_weight);
+    }
     const auto st = wmls_stencil<D>(lattice, d.re, d.weight);
     d.lattice_sum = st.laplacian.sum();
     // Incompressible: every fluid particle keeps rho0 and the volume dx^D.
@@ -202,7 +207,10 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
             if (stage == 0) {
                 G.scratch_offsets.clear();
                 G.scratch_pairs.clear();
-                Real n = 0;
+                // n: the operators' (PNU-MPS) weight, for the surface criterion; n_dev: the
+                // density-deviation term's (P3; projection.deviation_weight).
+                Real n = 0, n_dev = 0;
+                const bool smooth_deviation = d.deviation_weight != d.weight;
                 // Fluid-fluid collision on the velocities at the start of the step
                 // (docs/PROJECTION.md, "Collisions").
                 Vec<D> v_i = P_.v[i];
@@ -216,12 +224,14 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
                     G.scratch_offsets.push_back(off);
                     G.scratch_pairs.push_back(p);
                     n += list.factor[p];
+                    if (smooth_deviation)
+                        n_dev += ls_weight(off.norm(), re, d.deviation_weight);
                     if (case_.cfg.projection.fluid_collision && P_.kind[j] == Kind::fluid)
                         v_i += collision_velocity_change<D>(
                             P_.v[i], P_.v[j], off, d.collision_distance,
                             fluid_collision_restitution, Real(clock_.dt));
                 }
-                d.number_density[i] = n;
+                d.number_density[i] = smooth_deviation ? n_dev : n;
                 // The WMLS fits and the surface test, each over its operator's neighbours
                 // ([neighbours.<operator>]; all of them with radius selection).
                 const std::span<const Vec<D>> offsets(G.scratch_offsets);
@@ -277,7 +287,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
             }
             const Real src =
                 ppe_source(Real(case_.cfg.rho0), Real(clock_.dt), Real(case_.cfg.projection.gamma),
-                           div, d.number_density[i], d.n0);
+                           div, d.number_density[i], d.n0_deviation);
             for (std::uint32_t p = b; p < e; ++p)
                 G.a[p] = G.lap[p] / sum;
             d.bhat[i] = -src / sum;
@@ -306,6 +316,10 @@ void ProjectionScheme<D>::correct_stage(int group) {
     std::string failure;
     const Real g_norm = case_.momentum.gravity.norm();
     const PressureLevel level = d.free_level ? PressureLevel::free : PressureLevel::surface;
+    const bool hydrostatic_reference =
+        case_.cfg.projection.correction_reference == CorrectionReference::hydrostatic;
+    const Real rho0 = Real(case_.cfg.rho0);
+    const Vec<D>& gravity = case_.momentum.gravity;
     // Particle shifting, D = A h^2 per step (not scaled by the flow speed: still water needs
     // it too), added to P8's displacement.
     const bool shifting = case_.cfg.projection.shifting > 0 && !d.failed;
@@ -325,15 +339,38 @@ void ProjectionScheme<D>::correct_stage(int group) {
             continue;
         }
         const std::uint32_t k = i - lo;
-        // P7 with the stabilised gradient (docs/PROJECTION.md, "Stabilised gradient"): the
-        // reference is the smallest positive pressure around i (surface particles, at 0, are
-        // not a reference for their interior neighbours).
+        // P7 with the stabilised gradient (docs/PROJECTION.md, P7): the reference is the
+        // smallest positive pressure around i (surface particles, at 0, are not a reference
+        // for their interior neighbours), less its hydrostatic difference from i with
+        // correction_reference = "hydrostatic", which also floors the walls' pressures at the
+        // hydrostatic continuation of i's.
         Real p_ref = gradient_pressure(P_.p[i], level);
-        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            p_ref = gradient_reference(p_ref, P_.p[list.j[p]], level);
+        if (hydrostatic_reference) {
+            for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p) {
+                Vec<D> offset = P_.x[list.j[p]] - P_.x[i];
+                if (list.periodic)
+                    offset -= list.shift[p];
+                p_ref = hydrostatic_gradient_reference(p_ref, P_.p[list.j[p]],
+                                                       rho0 * gravity.dot(offset), level);
+            }
+            p_ref = clamp_gradient_reference(p_ref, level);
+        } else
+            for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
+                p_ref = gradient_reference(p_ref, P_.p[list.j[p]], level);
         Vec<D> grad = Vec<D>::Zero();
-        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            grad += grad_coefficient[p] * (gradient_pressure(P_.p[list.j[p]], level) - p_ref);
+        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p) {
+            const std::uint32_t j = list.j[p];
+            Real pj = gradient_pressure(P_.p[j], level);
+            if (hydrostatic_reference && level == PressureLevel::surface &&
+                P_.kind[j] == Kind::wall) {
+                Vec<D> offset = P_.x[j] - P_.x[i];
+                if (list.periodic)
+                    offset -= list.shift[p];
+                pj = wall_gradient_pressure(P_.p[j], gradient_pressure(P_.p[i], level),
+                                            rho0 * gravity.dot(offset));
+            }
+            grad += grad_coefficient[p] * (pj - p_ref);
+        }
         Vec<D> v = corrected_velocity<D>(d.u_star[i], grad, Real(case_.cfg.rho0), Real(clock_.dt));
         const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
