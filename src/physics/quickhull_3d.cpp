@@ -174,11 +174,9 @@ struct Hull {
             const int h = F.nb[static_cast<std::size_t>(k)];
             const int u = F.v[static_cast<std::size_t>((k + 1) % 3)];
             const Facet& H = f(h);
-            // H's corner that is neither v nor u.
-            int apex = H.v[0];
-            for (const int x : H.v)
-                if (x != v && x != u)
-                    apex = x;
+            // H's corner that is neither v nor u (both are corners of H, distinct): the sum of
+            // its three less theirs, without a branch per corner (issue 22, fifth pass).
+            const int apex = H.v[0] + H.v[1] + H.v[2] - v - u;
             if (F.n.dot(at(apex)) + F.d < -eps)
                 ++turns;
             g = h;
@@ -284,11 +282,10 @@ bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork
             work.incident[static_cast<std::size_t>(a)] = g;
         }
     }
-    for (std::size_t q = 0; q < n; ++q) {
-        const int i = static_cast<int>(q);
-        if (i != i0 && i != i1 && i != i2 && i != i3)
-            H.assign(i, 0, 4);
-    }
+    // The tetrahedron's corners are the points with an incident facet already.
+    for (std::size_t q = 0; q < n; ++q)
+        if (work.incident[q] < 0)
+            H.assign(static_cast<int>(q), 0, 4);
 
     // New facets are appended, so one pass over the growing list sees every one.
     int stamp = 0;
