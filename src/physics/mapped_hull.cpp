@@ -188,7 +188,13 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
     kept_images.clear();
     kept.clear();
     dropped.assign(h.images.size(), 0);
+    std::vector<int>& position = work.position;
+    position.resize(h.images.size());
     std::span<const Vec<D>> hull_input(h.images);
+    // 3-D: the extremes' octahedron as quickhull's first hull, as indices into hull_input,
+    // when the prefilter proved it convex (quickhull_3d.hpp).
+    std::array<int, 2 * D> octahedron{};
+    bool have_octahedron = false;
     if (prefilter == HullPrefilter::inscribed_ball) {
         StarSurface<D> star = star_surface<D>(h.images, ext, Vec<D>::Zero());
         // A particle at a free surface or wall has its images on one side of the origin: the
@@ -232,11 +238,25 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
                 if (q.squaredNorm() < drop * drop || deep_inside(q)) {
                     dropped[i] = 1;
                 } else {
+                    position[i] = static_cast<int>(kept.size());
                     kept.push_back(static_cast<int>(i));
                     kept_images.push_back(h.images[i]);
                 }
             }
             hull_input = kept_images;
+            // Convex with six distinct corners (a repeated one leaves a contracted surface).
+            // (Extremes are never dropped: each lies on a facet of the surface, outside the
+            // ball; `position` is checked all the same.)
+            if constexpr (D == 3) {
+                have_octahedron = star.convex;
+                for (std::size_t k = 0; k < ext.size(); ++k) {
+                    const auto i = static_cast<std::size_t>(ext[k]);
+                    octahedron[k] = position[i];
+                    have_octahedron = have_octahedron && dropped[i] == 0;
+                    for (std::size_t j = 0; j < k; ++j)
+                        have_octahedron = have_octahedron && ext[j] != ext[k];
+                }
+            }
         }
     }
     const bool filtered = hull_input.data() != h.images.data();
@@ -274,7 +294,8 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         }
     } else {
         ConvexHull3d& v = work.hull_3d;
-        convex_hull_3d_into(hull_input, HullPoints::vertices, work.quickhull, v);
+        convex_hull_3d_into(hull_input, HullPoints::vertices, work.quickhull, v,
+                            have_octahedron ? &octahedron : nullptr);
         if (with_boundary && !v.facets.empty()) // the last quickhull run made them
             for (const int c : v.points) {
                 const int f = work.quickhull.incident[static_cast<std::size_t>(c)];

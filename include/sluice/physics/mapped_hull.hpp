@@ -73,6 +73,7 @@ struct MappedHullWork {
     std::vector<Vec<D>> kept_images; // the images the hull is computed on, when prefiltered
     std::vector<int> kept;           // their indices
     std::vector<char> dropped;       // per image: 1 dropped by the prefilter, 2 a corner
+    std::vector<int> position;       // per kept image: its index in kept
     std::vector<int> on_facet;       // per corner image: a facet it lies on (-1: unknown)
     std::vector<int> corners;
     QuadrantHullWork quadrant; // D = 2
