@@ -148,7 +148,7 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
     // clearly below its plane (each edge's other triangle turns down): the surface then
     // bounds conv(e), which lies inside the hull.
     s.convex = true;
-    for (std::size_t t = 0; t < s.n.size(); ++t) {
+    for (std::size_t t = 0; t < s.n.size() && s.convex; ++t) {
         if (degenerate(corners[t]))
             continue;
         for (int k = 0; k < 2 * D; ++k)
@@ -188,8 +188,9 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
     kept_images.clear();
     kept.clear();
     dropped.assign(h.images.size(), 0);
-    std::vector<int>& position = work.position;
-    position.resize(h.images.size());
+    std::vector<int>& position = work.position; // 3-D only
+    if constexpr (D == 3)
+        position.resize(h.images.size());
     std::span<const Vec<D>> hull_input(h.images);
     // 3-D: the extremes' octahedron as quickhull's first hull, as indices into hull_input,
     // when the prefilter proved it convex (quickhull_3d.hpp).
@@ -238,7 +239,8 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
                 if (q.squaredNorm() < drop * drop || deep_inside(q)) {
                     dropped[i] = 1;
                 } else {
-                    position[i] = static_cast<int>(kept.size());
+                    if constexpr (D == 3)
+                        position[i] = static_cast<int>(kept.size());
                     kept.push_back(static_cast<int>(i));
                     kept_images.push_back(h.images[i]);
                 }
