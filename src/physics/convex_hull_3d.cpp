@@ -74,13 +74,13 @@ Real clearly_3d_volume(std::span<const Vec<3>> points) {
 } // namespace
 
 void convex_hull_3d_into(std::span<const Vec<3>> points, HullPoints which, QuickhullWork& work,
-                         ConvexHull3d& hull) {
+                         ConvexHull3d& hull, const std::array<int, 6>* octahedron) {
     hull.points.clear();
     hull.facets.clear();
     hull.dimension = -1;
     // The usual case (issue 22): a solid set, its hull without sorting or decomposing it.
-    if (points.size() >= 4 &&
-        quickhull_3d(points, clearly_3d_volume(points), work, hull.points, hull.facets)) {
+    if (points.size() >= 4 && quickhull_3d(points, clearly_3d_volume(points), work, hull.points,
+                                           hull.facets, octahedron)) {
         hull.dimension = 3;
         if (which == HullPoints::boundary)
             add_facet_points(points, distinct_points(points), hull);

@@ -174,11 +174,9 @@ struct Hull {
             const int h = F.nb[static_cast<std::size_t>(k)];
             const int u = F.v[static_cast<std::size_t>((k + 1) % 3)];
             const Facet& H = f(h);
-            // H's corner that is neither v nor u.
-            int apex = H.v[0];
-            for (const int x : H.v)
-                if (x != v && x != u)
-                    apex = x;
+            // H's corner that is neither v nor u (both are corners of H, distinct): the sum of
+            // its three less theirs, without a branch per corner (issue 22, fifth pass).
+            const int apex = H.v[0] + H.v[1] + H.v[2] - v - u;
             if (F.n.dot(at(apex)) + F.d < -eps)
                 ++turns;
             g = h;
@@ -202,23 +200,14 @@ int argmax(std::size_t n, Key key) {
     return best;
 }
 
-} // namespace
-
-bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork& work,
-                  std::vector<int>& corners, std::vector<Eigen::Matrix<Real, 4, 1>>& facets) {
-    corners.clear();
-    facets.clear();
+// The first hull as before the octahedron (and without it): a tetrahedron of the extremes
+// along the widest axis, the point farthest from their line, the point farthest from the
+// plane of the three; false when its volume is not above `min_volume`.
+bool start_tetrahedron(Hull& H, Real min_volume) {
+    const std::span<const Vec<3>> points = H.p;
+    QuickhullWork& work = H.w;
     const std::size_t n = points.size();
-    if (n < 4)
-        return false;
-    Real size2 = 0;
-    for (const auto& q : points)
-        size2 = std::max(size2, q.squaredNorm());
-    Hull H{points, work, kQuickhullCoplanar * std::sqrt(size2)};
     const auto at = [&](int i) -> const Vec<3>& { return points[static_cast<std::size_t>(i)]; };
-
-    // First tetrahedron: the extremes along the widest axis, the point farthest from their
-    // line, the point farthest from the plane of the three.
     // (One pass for the six extremes; of equal ones the lowest index, as argmax.)
     int axis = 0;
     std::array<int, 3> lo{}, hi{};
@@ -259,10 +248,6 @@ bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork
     if (!(volume > min_volume) || orientation_sign(at(i0), at(i1), at(i2), at(i3)) == 0)
         return false;
 
-    work.facets.clear();
-    work.next.assign(n, -1);
-    work.start_of.resize(n);
-    work.incident.assign(n, -1);
     work.vertices.assign({i0, i1, i2, i3});
     // Faces of the tetrahedron, each turned so that the fourth corner lies below it.
     const std::array<std::array<int, 4>, 4> faces{
@@ -284,11 +269,72 @@ bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork
             work.incident[static_cast<std::size_t>(a)] = g;
         }
     }
-    for (std::size_t q = 0; q < n; ++q) {
-        const int i = static_cast<int>(q);
-        if (i != i0 && i != i1 && i != i2 && i != i3)
-            H.assign(i, 0, 4);
+    return true;
+}
+
+// The octahedron of the six axis extremes as the first hull (facet o = octant o, as
+// mapped_hull's star surface numbers them); false when its volume is not above `min_volume`.
+bool start_octahedron(Hull& H, const std::array<int, 6>& e, Real min_volume) {
+    const auto at = [&](int i) -> const Vec<3>& { return H.at(i); };
+    const auto corner = [&](int o, int axis) {
+        return e[static_cast<std::size_t>(2 * axis + ((o >> axis) & 1))];
+    };
+    // A fan of tetrahedra from the +x extreme over the four facets without it (the -x ones).
+    Real volume = 0;
+    const Vec<3>& apex = at(e[0]);
+    for (int o = 1; o < 8; o += 2)
+        volume += std::abs((at(corner(o, 0)) - apex)
+                               .dot((at(corner(o, 1)) - apex).cross(at(corner(o, 2)) - apex))) /
+                  6;
+    if (!(volume > min_volume))
+        return false;
+    // Octant o's corners along x, y, z; outward counter-clockwise when o has an even number of
+    // minus signs, so the odd ones are turned (x, z, y). Edge k joins the corners of two axes;
+    // the facet across it is the octant with the third axis flipped.
+    for (int o = 0; o < 8; ++o) {
+        const bool odd = (((o & 1) + ((o >> 1) & 1) + ((o >> 2) & 1)) & 1) != 0;
+        const std::array<int, 3> axes =
+            odd ? std::array<int, 3>{0, 2, 1} : std::array<int, 3>{0, 1, 2};
+        const int g = H.add_facet(corner(o, axes[0]), corner(o, axes[1]), corner(o, axes[2]));
+        for (std::size_t k = 0; k < 3; ++k) {
+            const int third = 3 - axes[k] - axes[(k + 1) % 3];
+            H.f(g).nb[k] = o ^ (1 << third);
+            H.w.incident[static_cast<std::size_t>(H.f(g).v[k])] = g;
+        }
     }
+    H.w.vertices.assign(e.begin(), e.end());
+    return true;
+}
+
+} // namespace
+
+bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork& work,
+                  std::vector<int>& corners, std::vector<Eigen::Matrix<Real, 4, 1>>& facets,
+                  const std::array<int, 6>* octahedron) {
+    corners.clear();
+    facets.clear();
+    const std::size_t n = points.size();
+    if (n < 4)
+        return false;
+    Real size2 = 0;
+    for (const auto& q : points)
+        size2 = std::max(size2, q.squaredNorm());
+    Hull H{points, work, kQuickhullCoplanar * std::sqrt(size2)};
+    work.facets.clear();
+    work.next.assign(n, -1);
+    work.start_of.resize(n);
+    work.incident.assign(n, -1);
+    if (octahedron == nullptr || !start_octahedron(H, *octahedron, min_volume)) {
+        work.facets.clear();
+        work.incident.assign(n, -1);
+        if (!start_tetrahedron(H, min_volume))
+            return false;
+    }
+    // The first hull's corners are the points with an incident facet already.
+    const int first = static_cast<int>(work.facets.size());
+    for (std::size_t q = 0; q < n; ++q)
+        if (work.incident[q] < 0)
+            H.assign(static_cast<int>(q), 0, first);
 
     // New facets are appended, so one pass over the growing list sees every one.
     int stamp = 0;

@@ -33,8 +33,8 @@ struct ConvexHull3d {
                                           HullPoints which = HullPoints::vertices);
 
 // The same into `hull`, with the quickhull's buffers in `work` (a caller that hulls once per
-// particle).
+// particle); `octahedron`: quickhull_3d's optional first hull.
 void convex_hull_3d_into(std::span<const Vec<3>> points, HullPoints which, QuickhullWork& work,
-                         ConvexHull3d& hull);
+                         ConvexHull3d& hull, const std::array<int, 6>* octahedron = nullptr);
 
 } // namespace sluice

@@ -52,9 +52,15 @@ inline constexpr Real kMappedHullTolerance = Real(1e-9);
 // facet plane by more than 1e-2 rho is farther than that from every facet of the hull too and
 // is dropped as well (issue 22, second prefilter: the images near the extremes' directions,
 // which the ball keeps: 58 -> 21 of 123 on a jittered 3-D lattice). The hull of
-// the rest has the same corners and facets, so `vertices` and `boundary` are unchanged
-// (tests/unit/test_neighbour_selection.cpp compares both forms on lattices and deformed
-// sets). `none` computes the hull of every image (the reference for that test).
+// the rest has the same corners and facets, so `vertices` and `boundary` are unchanged.
+// The argument holds about any centre inside the extremes' hull and for a surface with a
+// facet contracted (one image the extreme of two half-axes): when the surface is not
+// star-shaped about the origin with a usable rho (a particle at a face or free surface), the
+// extremes' centroid is tried (issue 22, fifth pass: 8 % of the bench's 3-D calls, which
+// now keep ~29 of ~65 images instead of all). In 3-D a convex surface with six distinct
+// extremes is also quickhull's first hull (quickhull_3d.hpp).
+// tests/unit/test_neighbour_selection.cpp compares both forms on lattices and deformed
+// sets. `none` computes the hull of every image (the reference for that test).
 enum class HullPrefilter { inscribed_ball, none };
 
 // The radius rho above for these images (0 when the surface is not star-shaped about the
@@ -73,6 +79,7 @@ struct MappedHullWork {
     std::vector<Vec<D>> kept_images; // the images the hull is computed on, when prefiltered
     std::vector<int> kept;           // their indices
     std::vector<char> dropped;       // per image: 1 dropped by the prefilter, 2 a corner
+    std::vector<int> position;       // per kept image: its index in kept
     std::vector<int> on_facet;       // per corner image: a facet it lies on (-1: unknown)
     std::vector<int> corners;
     QuadrantHullWork quadrant; // D = 2

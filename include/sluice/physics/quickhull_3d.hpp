@@ -56,7 +56,17 @@ struct QuickhullWork {
 // farthest from their line, the point farthest from that plane) has a volume above
 // `min_volume`; false otherwise (too flat: the caller decides). `corners` ascending;
 // `facets` (n, d), unit outward n, n.x + d <= 0 inside, one per triangle.
+//
+// `octahedron` (optional): indices of the extremes along +x, -x, +y, -y, +z, -z, six distinct
+// points whose octahedron (facet per octant) the caller has proved convex with a margin far
+// beyond rounding (mapped_hull's prefilter: every extreme below every other facet's plane by
+// 1e-2 of its inradius). The hull then starts from it instead of the tetrahedron when its
+// volume is above `min_volume` (issue 22, fifth pass: two insertions and three passes over the
+// points less). The hull found is the same convex set; where points lie within eps of a facet
+// (rounded lattices) the triangulation, and with it which of them are corners, can depend on
+// the insertion order, as in Qhull (tests/unit/test_hull_selection_reference.cpp).
 bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork& work,
-                  std::vector<int>& corners, std::vector<Eigen::Matrix<Real, 4, 1>>& facets);
+                  std::vector<int>& corners, std::vector<Eigen::Matrix<Real, 4, 1>>& facets,
+                  const std::array<int, 6>* octahedron = nullptr);
 
 } // namespace sluice
