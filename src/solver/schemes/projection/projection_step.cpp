@@ -43,6 +43,16 @@ std::vector<Vec<D>> lattice_offsets(Real dx, Real re) {
     return out;
 }
 
+// x_j - x_i for pair p of particle i's list, with the periodic image of j nearest to i.
+template <int D>
+Vec<D> pair_offset(const NeighbourList<D>& list, const std::vector<Vec<D>>& x, std::uint32_t i,
+                   std::uint32_t p) {
+    Vec<D> dx = x[i] - x[list.j[p]];
+    if (list.periodic)
+        dx += list.shift[p];
+    return -dx;
+}
+
 // Particle shifting (docs/PROJECTION.md, "Particle shifting"; fickian_shift) of the
 // fluid particles of a group, from the positions at the start of the step, over the step's
 // neighbour list (every particle within re, fluid and wall, each of volume dx^D). Near the
@@ -172,12 +182,8 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
             G.grad_correct.resize(list.pairs);
         G.a.resize(list.pairs);
     }
-    const auto offset_of = [&](std::uint32_t i, std::uint32_t p) -> Vec<D> {
-        // x_j - x_i with the periodic image of j nearest to i.
-        Vec<D> dx = P_.x[i] - P_.x[list.j[p]];
-        if (list.periodic)
-            dx += list.shift[p];
-        return -dx;
+    const auto offset_of = [&](std::uint32_t i, std::uint32_t p) {
+        return pair_offset<D>(list, P_.x, i, p);
     };
     for (CellIndex c : cells)
         for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
@@ -346,13 +352,10 @@ void ProjectionScheme<D>::correct_stage(int group) {
         // hydrostatic continuation of i's.
         Real p_ref = gradient_pressure(P_.p[i], level);
         if (hydrostatic_reference) {
-            for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p) {
-                Vec<D> offset = P_.x[list.j[p]] - P_.x[i];
-                if (list.periodic)
-                    offset -= list.shift[p];
-                p_ref = hydrostatic_gradient_reference(p_ref, P_.p[list.j[p]],
-                                                       rho0 * gravity.dot(offset), level);
-            }
+            for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
+                p_ref = hydrostatic_gradient_reference(
+                    p_ref, P_.p[list.j[p]], rho0 * gravity.dot(pair_offset<D>(list, P_.x, i, p)),
+                    level);
             p_ref = clamp_gradient_reference(p_ref, level);
         } else
             for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
@@ -362,24 +365,17 @@ void ProjectionScheme<D>::correct_stage(int group) {
             const std::uint32_t j = list.j[p];
             Real pj = gradient_pressure(P_.p[j], level);
             if (hydrostatic_reference && level == PressureLevel::surface &&
-                P_.kind[j] == Kind::wall) {
-                Vec<D> offset = P_.x[j] - P_.x[i];
-                if (list.periodic)
-                    offset -= list.shift[p];
+                P_.kind[j] == Kind::wall)
                 pj = wall_gradient_pressure(P_.p[j], gradient_pressure(P_.p[i], level),
-                                            rho0 * gravity.dot(offset));
-            }
+                                            rho0 * gravity.dot(pair_offset<D>(list, P_.x, i, p)));
             grad += grad_coefficient[p] * (pj - p_ref);
         }
         Vec<D> v = corrected_velocity<D>(d.u_star[i], grad, Real(case_.cfg.rho0), Real(clock_.dt));
         const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            if (P_.kind[list.j[p]] == Kind::wall) {
-                Vec<D> offset = P_.x[list.j[p]] - P_.x[i];
-                if (list.periodic)
-                    offset -= list.shift[p];
-                v = wall_collision<D>(v, offset, collision, Real(clock_.dt));
-            }
+            if (P_.kind[list.j[p]] == Kind::wall)
+                v = wall_collision<D>(v, pair_offset<D>(list, P_.x, i, p), collision,
+                                      Real(clock_.dt));
         Vec<D> x =
             projection_drift<D>(P_.x[i], v, Real(clock_.dt), case_.planes,
                                 Real(case_.cfg.restitution), shifting ? &P_.shift[i] : nullptr);
