@@ -19,8 +19,9 @@ preconditioner named), "fixed-jacobi" (both old settings: the scheme as it was b
 issue 22); "ilu0-tol6", "ilu0-tol5", "jacobi-tol6", "jacobi-tol5" (a looser
 projection.tolerance, 1e-6 or 1e-5 instead of the case's 1e-8); "shift0.05", "shift0.2", "shift0.5"
 (particle shifting, projection.shifting = 0.05, 0.2 or 0.5); "two-level", "two-level-tol6"
-(projection.preconditioner = "two_level", at the case's 1e-8 or at 1e-6); "hydrostatic"
-(projection.correction_reference = "hydrostatic").
+(projection.preconditioner = "two_level", at the case's 1e-8 or at 1e-6); "minimum"
+(correction_reference = "minimum", deviation_weight = "pnu_mps": the scheme before session 30);
+"gamma0" (projection.gamma = 0).
 
 Usage: perf/projection/time_to_solution.py [--dx 0.01] [--end 1.0] [--rounds 1]
            [--variants adaptive,fixed,jacobi,fixed-jacobi] [--threads 1] [--sluice PATH]
@@ -69,9 +70,10 @@ VARIANTS = {
     "shift0.05": ["projection.shifting=0.05"],
     "shift0.2": ["projection.shifting=0.2"],
     "shift0.5": ["projection.shifting=0.5"],
-    # P7's reference pressure (docs/PROJECTION.md, P7).
-    "hydrostatic": ['projection.correction_reference="hydrostatic"'],
-    "hydrostatic-gamma0": ['projection.correction_reference="hydrostatic"', "projection.gamma=0"],
+    # P7's reference and P3's weight as before session 30 (docs/PROJECTION.md, P3 and P7), and
+    # the defaults without the density-deviation term.
+    "minimum": ['projection.correction_reference="minimum"', 'projection.deviation_weight="pnu_mps"'],
+    "gamma0": ["projection.gamma=0"],
 }
 
 
