@@ -210,12 +210,10 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         std::swap(P_.x, P_.x_ref);
     ranks_.distribute(P_, resume != nullptr,
                       cfg.initial_decomposition == InitialDecomposition::key_range);
-    const std::size_t n = P_.size();
-    const auto per_group = static_cast<std::size_t>(std::max(1, cfg.particles_per_group));
-    const int by_size = static_cast<int>((n + per_group - 1) / per_group);
-    // Groups are independent of the thread count for results; more groups than threads let
+    // The WCSPH scheme's results do not depend on the grouping; more groups than threads let
     // TBB balance inside a rank.
-    target_groups_ = std::max(by_size, 4 * threads_);
+    target_groups_ = tasks::target_group_count(
+        P_.size(), static_cast<std::size_t>(std::max(1, cfg.particles_per_group)), threads_);
     rebin_and_decompose();
     if (resume != nullptr)
         std::swap(P_.x, P_.x_ref);

@@ -10,6 +10,16 @@ int GroupTopology::group_of(MortonKey k) const {
     return it == key_begin.begin() ? 0 : static_cast<int>(it - key_begin.begin()) - 1;
 }
 
+int target_group_count(std::size_t particles, std::size_t per_group, int threads) {
+    const auto ceil_div = [](std::size_t a, std::size_t b) { return (a + b - 1) / b; };
+    const std::size_t t = static_cast<std::size_t>(std::max(1, threads));
+    const std::size_t by_size = ceil_div(particles, std::max<std::size_t>(1, per_group));
+    // One thread has nothing to balance: its floor stays 4 (and its grouping as before).
+    const std::size_t balance =
+        t == 1 ? 4 : std::max(4 * t, std::min(8 * t, ceil_div(particles, kMinGroupParticles)));
+    return static_cast<int>(std::max(by_size, balance));
+}
+
 std::vector<MortonKey> cut_by_cost(const std::vector<OccupiedCell>& occupied, int groups) {
     std::vector<MortonKey> begin{0};
     if (occupied.empty() || groups <= 1)

@@ -28,6 +28,23 @@ TEST_CASE("cut_by_cost gives groups of nearly equal cost") {
     CHECK(topo.group_of(topo.key_begin[3] - 1) == 2);
 }
 
+TEST_CASE("target_group_count: the size target, or 8 groups per thread for small ranks") {
+    using sluice::tasks::target_group_count;
+    // The 232k strong-scaling case: the size target (2,000 particles) decides.
+    CHECK(target_group_count(232128, 2000, 1) == 117);
+    CHECK(target_group_count(232128, 2000, 2) == 117);
+    // Seed 000's box (6,859 particles): 4 groups by size; 8 per thread on 2 threads; one thread
+    // keeps the old floor of 4.
+    CHECK(target_group_count(6859, 2000, 1) == 4);
+    CHECK(target_group_count(6859, 2000, 2) == 16);
+    CHECK(target_group_count(3430, 2000, 2) == 14); // a rank of it at 2 ranks x 2 threads
+    // No group below 250 particles for the 8-per-thread floor, but never under 4 per thread.
+    CHECK(target_group_count(1000, 2000, 2) == 8);
+    CHECK(target_group_count(3000, 2000, 4) == 16);
+    CHECK(target_group_count(100000, 2000, 16) == 128);
+    CHECK(target_group_count(0, 2000, 1) == 4);
+}
+
 TEST_CASE("Group adjacency follows cell adjacency, including the periodic wrap") {
     // A 6x1-cell strip, periodic in x: cells 0 and 5 touch through the boundary.
     auto grid = CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(6, 1), 1.0, {true, false});

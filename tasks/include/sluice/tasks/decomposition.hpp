@@ -6,6 +6,7 @@
 // The runtime knows cells, keys and costs; it knows nothing of what is computed in a cell.
 #include "sluice/core/cell_grid.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -29,6 +30,17 @@ struct GroupTopology {
     [[nodiscard]] int group_count() const { return static_cast<int>(key_begin.size()); }
     [[nodiscard]] int group_of(MortonKey k) const;
 };
+
+// How many cell groups a rank holding `particles` cuts its cells into: enough for groups of
+// about `per_group` particles (runtime.particles_per_group), and at least 8 per worker thread,
+// so that the threads finish each stage of the step graph together (with 4 per thread, seed
+// 000's 6,859-particle box ran 1x2 in 28.9 s median of three, with 8 per thread in 23.2 s;
+// perf/strong_scaling/README.md, session 31), but no more than that floor needs groups of
+// fewer than kMinGroupParticles particles (scheduling a task costs microseconds); never
+// fewer than 4 per thread (the earlier floor, kept as it was for one thread: the projection
+// scheme's results follow the grouping, docs/PROJECTION.md §3).
+inline constexpr std::size_t kMinGroupParticles = 250;
+[[nodiscard]] int target_group_count(std::size_t particles, std::size_t per_group, int threads);
 
 // Cuts the Morton-ordered occupied cells into `groups` runs of nearly equal cost.
 std::vector<MortonKey> cut_by_cost(const std::vector<OccupiedCell>& occupied, int groups);
