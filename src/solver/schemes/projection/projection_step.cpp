@@ -350,7 +350,8 @@ void ProjectionScheme<D>::correct_stage(int group) {
         // for their interior neighbours), less its hydrostatic difference from i with
         // correction_reference = "hydrostatic", which also floors the walls' pressures at the
         // hydrostatic continuation of i's.
-        Real p_ref = gradient_pressure(P_.p[i], level);
+        const Real p_i = gradient_pressure(P_.p[i], level);
+        Real p_ref = p_i;
         if (hydrostatic_reference) {
             for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
                 p_ref = hydrostatic_gradient_reference(
@@ -366,11 +367,11 @@ void ProjectionScheme<D>::correct_stage(int group) {
             Real pj = gradient_pressure(P_.p[j], level);
             if (hydrostatic_reference && level == PressureLevel::surface &&
                 P_.kind[j] == Kind::wall)
-                pj = wall_gradient_pressure(P_.p[j], gradient_pressure(P_.p[i], level),
+                pj = wall_gradient_pressure(P_.p[j], p_i,
                                             rho0 * gravity.dot(pair_offset<D>(list, P_.x, i, p)));
             grad += grad_coefficient[p] * (pj - p_ref);
         }
-        Vec<D> v = corrected_velocity<D>(d.u_star[i], grad, Real(case_.cfg.rho0), Real(clock_.dt));
+        Vec<D> v = corrected_velocity<D>(d.u_star[i], grad, rho0, Real(clock_.dt));
         const Real collision = d.collision_distance;
         for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
             if (P_.kind[list.j[p]] == Kind::wall)
