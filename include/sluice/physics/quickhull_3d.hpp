@@ -37,6 +37,7 @@ struct QuickhullWork {
         Vec<3> n = Vec<3>::Zero(); // unit outward normal; n.x + d: distance above the plane
         Real d = 0;
         Real area2 = 0;    // |(v1 - v0) x (v2 - v0)|: twice the area, for the sliver test
+        Real guard = 0;    // |n.x + d| above this: its sign is the exact orientation's
         int outside = -1;  // first of the points assigned to this facet (linked by next)
         int furthest = -1; // the one farthest above it
         Real furthest_dist = 0;
