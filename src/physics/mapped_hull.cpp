@@ -67,7 +67,8 @@ template <int D>
 struct StarSurface {
     static constexpr int kFacets = D == 2 ? 4 : 8;
     std::array<Vec<D>, kFacets> n;
-    std::array<std::array<Real, kFacets>, D> n_soa{}; // n by component, for below_all
+    std::array<Eigen::Array<Real, kFacets, 1>, D> n_by_axis; // n by component (deep_inside)
+    Eigen::Array<Real, kFacets, 1> h_lanes;                  // h, the same
     std::array<Real, kFacets> h{};
     Real rho = 0;
     bool convex = false; // every extreme not on a facet lies below its plane by the drop margin
@@ -166,9 +167,11 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
                 s.convex = false;
         }
     }
-    for (std::size_t t = 0; t < s.n.size(); ++t)
+    for (std::size_t t = 0; t < s.n.size(); ++t) {
         for (int a = 0; a < D; ++a)
-            s.n_soa[static_cast<std::size_t>(a)][t] = s.n[t][a];
+            s.n_by_axis[static_cast<std::size_t>(a)][static_cast<Eigen::Index>(t)] = s.n[t][a];
+        s.h_lanes[static_cast<Eigen::Index>(t)] = s.h[t];
+    }
     return s;
 }
 
@@ -234,14 +237,16 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         const auto deep_inside = [&](const Vec<D>& q) {
             if (!star.convex)
                 return false;
-            bool below = true;
-            for (std::size_t t = 0; t < star.h.size(); ++t) {
-                Real dot = star.n_soa[0][t] * q[0] + star.n_soa[1][t] * q[1];
-                if constexpr (D == 3)
-                    dot += star.n_soa[2][t] * q[2];
-                below &= dot - star.h[t] < -margin;
-            }
-            return below;
+            if constexpr (D == 2)
+                return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1]) - star.h_lanes <
+                        -margin)
+                    .all();
+            else
+                return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1] +
+                         star.n_by_axis[2] * q[2]) -
+                            star.h_lanes <
+                        -margin)
+                    .all();
         };
         // The margin left inside every facet must dwarf the boundary tolerance.
         if (rho > 0 && margin > 1e3 * tol) {
@@ -338,16 +343,28 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         inner = std::min(inner, -f[D]);
     const Real skip = inner - 2 * tol;
     const Real skip2 = skip > 0 ? skip * skip : Real(-1);
-    // Whether some facet holds the image: the same answer whichever facet is tried first.
+    // Whether some facet holds the image: the same answer whichever facet is tried first, so
+    // all are tried at once, as vector lanes over the facets by component (issue 22, sixth
+    // pass: an image inside the hull scans every facet), with the sums of
+    // f.head(D).dot(q) + f[D]; the largest of them decides.
+    std::array<Eigen::Array<Real, Eigen::Dynamic, 1>, D + 1>& by_axis = work.facet_components;
+    const auto facet_count = static_cast<Eigen::Index>(h.facets.size());
+    for (int a = 0; a <= D; ++a) {
+        auto& c = by_axis[static_cast<std::size_t>(a)];
+        c.resize(facet_count);
+        for (Eigen::Index k = 0; k < facet_count; ++k)
+            c[k] = h.facets[static_cast<std::size_t>(k)][a];
+    }
     const auto on_a_facet = [&](const Vec<D>& q) {
-        for (const auto& f : h.facets)
-            if (f.template head<D>().dot(q) + f[D] > -tol)
-                return true;
-        return false;
+        if constexpr (D == 2)
+            return ((by_axis[0] * q[0] + by_axis[1] * q[1]) + by_axis[2]).maxCoeff() > -tol;
+        else
+            return ((by_axis[0] * q[0] + by_axis[1] * q[1] + by_axis[2] * q[2]) + by_axis[3])
+                       .maxCoeff() > -tol;
     };
-    for (std::size_t i = 0; i < h.images.size(); ++i) {
-        if (dropped[i] == 1 || h.images[i].squaredNorm() < skip2)
-            continue;
+    const auto test = [&](std::size_t i) {
+        if (h.images[i].squaredNorm() < skip2)
+            return;
         const Vec<D>& q = h.images[i];
         bool on = false;
         if (dropped[i] == 2 && on_facet[i] >= 0) {
@@ -356,6 +373,15 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         }
         if (on || on_a_facet(q))
             h.boundary.push_back(static_cast<int>(i));
+    };
+    // Only the images the prefilter kept can be on a facet (`kept` ascending, as the output).
+    if (filtered) {
+        for (const int i : kept)
+            test(static_cast<std::size_t>(i));
+    } else {
+        for (std::size_t i = 0; i < h.images.size(); ++i)
+            if (dropped[i] != 1)
+                test(i);
     }
 }
 
@@ -375,8 +401,13 @@ void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, Hull
                              MappedHullWork<D>& work, MappedHull<D>& h, std::vector<int>& candidate,
                              bool with_boundary) {
     // One pass: the candidates, their images and the images' extremes.
-    candidate.clear();
-    h.images.clear();
+    // Written through pointers into buffers sized for every offset, then cut to the count
+    // (no capacity check per candidate; issue 22, sixth pass).
+    candidate.resize(offsets.size());
+    h.images.resize(offsets.size());
+    int* const cand = candidate.data();
+    Vec<D>* const image = h.images.data();
+    int n = 0;
     Extremes<D> found;
     Real size2 = 0; // a scalar of its own: the one chain from image to image
     for (std::size_t j = 0; j < offsets.size(); ++j) {
@@ -384,11 +415,14 @@ void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, Hull
         if (r2 > 0 && r2 <= radius2) {
             const Vec<D> q = inverse_square_map<D>(offsets[j]);
             size2 = std::max(size2, q.squaredNorm());
-            found.add_directions(q, static_cast<int>(candidate.size()));
-            h.images.push_back(q);
-            candidate.push_back(static_cast<int>(j));
+            found.add_directions(q, n);
+            image[n] = q;
+            cand[n] = static_cast<int>(j);
+            ++n;
         }
     }
+    candidate.resize(static_cast<std::size_t>(n));
+    h.images.resize(static_cast<std::size_t>(n));
     found.size2 = size2;
     hull_of_images<D>(found, prefilter, with_boundary, work, h);
 }
