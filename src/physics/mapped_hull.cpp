@@ -31,17 +31,19 @@ struct Extremes {
         size2 = std::max(size2, q.squaredNorm());
         add_directions(q, i);
     }
+    // Selects, not branches: which image is a new extreme is random, and a mispredicted
+    // branch costs more than the selects (issue 22, sixth pass).
     void add_directions(const Vec<D>& q, int i) {
         for (int a = 0; a < D; ++a) {
             const auto up = static_cast<std::size_t>(2 * a);
-            if (q[a] > far[up]) {
-                far[up] = q[a];
-                e[up] = i;
-            }
-            if (-q[a] > far[up + 1]) {
-                far[up + 1] = -q[a];
-                e[up + 1] = i;
-            }
+            const Real plus = q[a];
+            const Real minus = -q[a];
+            const bool more = plus > far[up];
+            const bool less = minus > far[up + 1];
+            far[up] = more ? plus : far[up];
+            e[up] = more ? i : e[up];
+            far[up + 1] = less ? minus : far[up + 1];
+            e[up + 1] = less ? i : e[up + 1];
         }
     }
 };
@@ -237,30 +239,38 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         const auto deep_inside = [&](const Vec<D>& q) {
             if (!star.convex)
                 return false;
+            // Below every plane by the margin: the largest excess decides, a reduction
+            // without the early exit (and its mispredicted branch) of all().
             if constexpr (D == 2)
-                return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1]) - star.h_lanes <
-                        -margin)
-                    .all();
+                return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1]) - star.h_lanes)
+                           .maxCoeff() < -margin;
             else
                 return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1] +
                          star.n_by_axis[2] * q[2]) -
-                            star.h_lanes <
-                        -margin)
-                    .all();
+                        star.h_lanes)
+                           .maxCoeff() < -margin;
         };
         // The margin left inside every facet must dwarf the boundary tolerance.
         if (rho > 0 && margin > 1e3 * tol) {
-            for (std::size_t i = 0; i < h.images.size(); ++i) {
+            // Without a branch on the outcome (random: about half the images go either way):
+            // both tests always, the kept index and image always written at the end of the
+            // kept list, which only grows when the image is kept (issue 22, sixth pass).
+            const std::size_t count = h.images.size();
+            kept.resize(count);
+            kept_images.resize(count);
+            std::size_t n = 0;
+            for (std::size_t i = 0; i < count; ++i) {
                 const Vec<D> q = h.images[i] - centre;
-                if (q.squaredNorm() < drop * drop || deep_inside(q)) {
-                    dropped[i] = 1;
-                } else {
-                    if constexpr (D == 3)
-                        position[i] = static_cast<int>(kept.size());
-                    kept.push_back(static_cast<int>(i));
-                    kept_images.push_back(h.images[i]);
-                }
+                const bool drop_it = (q.squaredNorm() < drop * drop) | deep_inside(q);
+                dropped[i] = static_cast<char>(drop_it);
+                if constexpr (D == 3)
+                    position[i] = static_cast<int>(n);
+                kept[n] = static_cast<int>(i);
+                kept_images[n] = h.images[i];
+                n += drop_it ? 0 : 1;
             }
+            kept.resize(n);
+            kept_images.resize(n);
             hull_input = kept_images;
             // Convex with six distinct corners (a repeated one leaves a contracted surface).
             // (Extremes are never dropped: each lies on a facet of the surface, outside the

@@ -94,10 +94,11 @@ struct Hull {
             if (dist > eps) {
                 w.next[static_cast<std::size_t>(q)] = F.outside;
                 F.outside = q;
-                if (dist > F.furthest_dist || (dist == F.furthest_dist && q < F.furthest)) {
-                    F.furthest_dist = dist;
-                    F.furthest = q;
-                }
+                // Selects, not a branch: whether q is the farthest so far is random.
+                const bool farther =
+                    dist > F.furthest_dist || (dist == F.furthest_dist && q < F.furthest);
+                F.furthest_dist = farther ? dist : F.furthest_dist;
+                F.furthest = farther ? q : F.furthest;
                 return true;
             }
         }
@@ -165,9 +166,8 @@ struct Hull {
                 const int b = f(g).v[static_cast<std::size_t>((e + 1) % 3)];
                 const int c = add_facet(a, b, eye);
                 f(c).nb[0] = h;
-                for (int& back : f(h).nb)
-                    if (back == g)
-                        back = c;
+                for (int& back : f(h).nb) // without a branch: which edge is random
+                    back = back == g ? c : back;
                 w.start_of[static_cast<std::size_t>(a)] = c;
             }
         }
@@ -182,15 +182,18 @@ struct Hull {
         }
         w.incident[static_cast<std::size_t>(eye)] = first_new;
         // Outside points of the visible facets (the eye excepted) go to the new facets.
-        w.pending.clear();
+        // (Written without a branch on q != eye, which is random.)
+        // w.pending holds a slot per point (quickhull_3d): no point is in two outside sets.
+        std::size_t pending = 0;
         for (const int g : w.visible) {
             f(g).alive = false;
-            for (int q = f(g).outside; q >= 0; q = w.next[static_cast<std::size_t>(q)])
-                if (q != eye)
-                    w.pending.push_back(q);
+            for (int q = f(g).outside; q >= 0; q = w.next[static_cast<std::size_t>(q)]) {
+                w.pending[pending] = q;
+                pending += q != eye ? 1 : 0;
+            }
         }
-        for (const int q : w.pending)
-            assign(q, first_new, last_new);
+        for (std::size_t t = 0; t < pending; ++t)
+            assign(w.pending[t], first_new, last_new);
     }
 
     // Whether vertex v is a corner: the triangles around it turn in 3 or more places (a turn
@@ -201,7 +204,7 @@ struct Hull {
         int turns = 0;
         do {
             const Facet& F = f(g);
-            const int k = F.v[0] == v ? 0 : (F.v[1] == v ? 1 : 2);
+            const int k = int(F.v[1] == v) + 2 * int(F.v[2] == v); // no branch: random
             const int h = F.nb[static_cast<std::size_t>(k)];
             const int u = F.v[static_cast<std::size_t>((k + 1) % 3)];
             const Facet& H = f(h);
@@ -355,6 +358,7 @@ bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork
     work.next.assign(n, -1);
     work.start_of.resize(n);
     work.incident.assign(n, -1);
+    work.pending.resize(n);
     if (octahedron == nullptr || !start_octahedron(H, *octahedron, min_volume)) {
         work.facets.clear();
         work.incident.assign(n, -1);
@@ -381,10 +385,18 @@ bool quickhull_3d(std::span<const Vec<3>> points, Real min_volume, QuickhullWork
 
     // A vertex whose facets all went (seen from a later eye) is inside: its record of an
     // incident facet is dead. Every vertex left on the hull had one renewed (the horizon).
+    // Ascending without a sort: flags by index, then a compaction without branches.
+    work.is_corner.assign(n, 0);
     for (const int v : work.vertices)
         if (H.f(work.incident[static_cast<std::size_t>(v)]).alive && H.corner(v))
-            corners.push_back(v);
-    std::sort(corners.begin(), corners.end());
+            work.is_corner[static_cast<std::size_t>(v)] = 1;
+    corners.resize(n);
+    std::size_t count = 0;
+    for (std::size_t q = 0; q < n; ++q) {
+        corners[count] = static_cast<int>(q);
+        count += static_cast<std::size_t>(work.is_corner[q]);
+    }
+    corners.resize(count);
     work.output.assign(work.facets.size(), -1);
     for (std::size_t k = 0; k < work.facets.size(); ++k) {
         const Facet& F = work.facets[k];

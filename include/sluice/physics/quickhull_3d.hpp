@@ -46,10 +46,11 @@ struct QuickhullWork {
         bool alive = true;
     };
     std::vector<Facet> facets;
-    std::vector<int> next;     // per point: next point of the same outside set
-    std::vector<int> start_of; // per point: the new facet whose horizon edge starts there
-    std::vector<int> incident; // per point: one live facet it is a vertex of (-1: none)
-    std::vector<int> output;   // per facet: its index in quickhull_3d's `facets` (-1: none)
+    std::vector<int> next;       // per point: next point of the same outside set
+    std::vector<int> start_of;   // per point: the new facet whose horizon edge starts there
+    std::vector<int> incident;   // per point: one live facet it is a vertex of (-1: none)
+    std::vector<int> output;     // per facet: its index in quickhull_3d's `facets` (-1: none)
+    std::vector<char> is_corner; // per point: 1 when a corner
     std::vector<int> stack, visible, pending, vertices;
 };
 
