@@ -82,9 +82,11 @@ void convex_hull_3d_into(std::span<const Vec<3>> points, HullPoints which, Quick
     if (points.size() >= 4 && quickhull_3d(points, clearly_3d_volume(points), work, hull.points,
                                            hull.facets, octahedron)) {
         hull.dimension = 3;
-        if (which == HullPoints::boundary)
+        // quickhull_3d's corners ascend already; the facet points need a sort.
+        if (which == HullPoints::boundary) {
             add_facet_points(points, distinct_points(points), hull);
-        std::sort(hull.points.begin(), hull.points.end());
+            std::sort(hull.points.begin(), hull.points.end());
+        }
         return;
     }
     const std::vector<int> idx = distinct_points(points);

@@ -31,17 +31,19 @@ struct Extremes {
         size2 = std::max(size2, q.squaredNorm());
         add_directions(q, i);
     }
+    // Selects, not branches: which image is a new extreme is random, and a mispredicted
+    // branch costs more than the selects (issue 22, sixth pass).
     void add_directions(const Vec<D>& q, int i) {
         for (int a = 0; a < D; ++a) {
             const auto up = static_cast<std::size_t>(2 * a);
-            if (q[a] > far[up]) {
-                far[up] = q[a];
-                e[up] = i;
-            }
-            if (-q[a] > far[up + 1]) {
-                far[up + 1] = -q[a];
-                e[up + 1] = i;
-            }
+            const Real plus = q[a];
+            const Real minus = -q[a];
+            const bool more = plus > far[up];
+            const bool less = minus > far[up + 1];
+            far[up] = more ? plus : far[up];
+            e[up] = more ? i : e[up];
+            far[up + 1] = less ? minus : far[up + 1];
+            e[up + 1] = less ? i : e[up + 1];
         }
     }
 };
@@ -67,6 +69,8 @@ template <int D>
 struct StarSurface {
     static constexpr int kFacets = D == 2 ? 4 : 8;
     std::array<Vec<D>, kFacets> n;
+    std::array<Eigen::Array<Real, kFacets, 1>, D> n_by_axis; // n by component (deep_inside)
+    Eigen::Array<Real, kFacets, 1> h_lanes;                  // h, the same
     std::array<Real, kFacets> h{};
     Real rho = 0;
     bool convex = false; // every extreme not on a facet lies below its plane by the drop margin
@@ -78,10 +82,12 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
                             const Vec<D>& centre) {
     StarSurface<D> s;
     std::array<Vec<D>, 2 * D> e;
+    std::array<Real, 2 * D> len; // |e[k]|, once: every facet's orientation margin uses them
     for (std::size_t k = 0; k < e.size(); ++k) {
         if (ext[k] < 0)
             return s;
         e[k] = images[static_cast<std::size_t>(ext[k])] - centre;
+        len[k] = e[k].norm();
     }
     // Corners of each facet, as indices into e.
     std::array<std::array<int, D>, StarSurface<D>::kFacets> corners;
@@ -107,7 +113,8 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
             const Vec<2>& a = e[static_cast<std::size_t>(corners[t][0])];
             const Vec<2>& b = e[static_cast<std::size_t>(corners[t][1])];
             const Real cross = a.x() * b.y() - a.y() * b.x();
-            if (!(cross > kOrientationMargin * a.norm() * b.norm()))
+            if (!(cross > kOrientationMargin * len[static_cast<std::size_t>(corners[t][0])] *
+                              len[static_cast<std::size_t>(corners[t][1])]))
                 return s;
             const Vec<2> edge = b - a;
             const Real length = edge.norm();
@@ -132,7 +139,9 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
             const Vec<3>& c = e[static_cast<std::size_t>(4 + sz)];
             const Real sign = ((sx + sy + sz) & 1) != 0 ? Real(-1) : Real(1);
             const Real det = sign * a.dot(b.cross(c));
-            if (!(det > kOrientationMargin * a.norm() * b.norm() * c.norm()))
+            if (!(det > kOrientationMargin * len[static_cast<std::size_t>(sx)] *
+                            len[static_cast<std::size_t>(2 + sy)] *
+                            len[static_cast<std::size_t>(4 + sz)]))
                 return s;
             const Vec<3> m = (b - a).cross(c - a);
             const Real area2 = m.norm();
@@ -147,15 +156,23 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
     // Convex when every extreme off a facet (not the image of one of its corners) lies
     // clearly below its plane (each edge's other triangle turns down): the surface then
     // bounds conv(e), which lies inside the hull.
+    // A facet's corners are one extreme per axis; the others are their opposites (c ^ 1).
     s.convex = true;
     for (std::size_t t = 0; t < s.n.size() && s.convex; ++t) {
         if (degenerate(corners[t]))
             continue;
-        for (int k = 0; k < 2 * D; ++k)
+        for (const int c : corners[t]) {
+            const int k = c ^ 1;
             if (std::none_of(corners[t].begin(), corners[t].end(),
-                             [&](int c) { return same(c, k); }) &&
+                             [&](int o) { return same(o, k); }) &&
                 !(s.n[t].dot(e[static_cast<std::size_t>(k)]) - s.h[t] < -kDropMargin * rho))
                 s.convex = false;
+        }
+    }
+    for (std::size_t t = 0; t < s.n.size(); ++t) {
+        for (int a = 0; a < D; ++a)
+            s.n_by_axis[static_cast<std::size_t>(a)][static_cast<Eigen::Index>(t)] = s.n[t][a];
+        s.h_lanes[static_cast<Eigen::Index>(t)] = s.h[t];
     }
     return s;
 }
@@ -217,34 +234,43 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         const Real drop = (1 - kDropMargin) * rho;
         // Inside conv(e) by more than the margin (convex surface only): below every facet
         // plane by the margin. The own orthant's facet first, the likeliest to fail.
+        // Every facet tested, without an early exit: the 8 (4) tests run as vector lanes
+        // (issue 22, sixth pass), the same sums as n.dot(q) - h.
         const auto deep_inside = [&](const Vec<D>& q) {
             if (!star.convex)
                 return false;
-            int own = 0;
-            for (int a = 0; a < D; ++a)
-                own |= (q[a] < 0 ? 1 : 0) << a;
+            // Below every plane by the margin: the largest excess decides, a reduction
+            // without the early exit (and its mispredicted branch) of all().
             if constexpr (D == 2)
-                own = std::array<int, 4>{0, 1, 3, 2}[static_cast<std::size_t>(own)];
-            for (int k = 0; k < StarSurface<D>::kFacets; ++k) {
-                const auto t = static_cast<std::size_t>(k ^ own);
-                if (!(star.n[t].dot(q) - star.h[t] < -margin))
-                    return false;
-            }
-            return true;
+                return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1]) - star.h_lanes)
+                           .maxCoeff() < -margin;
+            else
+                return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1] +
+                         star.n_by_axis[2] * q[2]) -
+                        star.h_lanes)
+                           .maxCoeff() < -margin;
         };
         // The margin left inside every facet must dwarf the boundary tolerance.
         if (rho > 0 && margin > 1e3 * tol) {
-            for (std::size_t i = 0; i < h.images.size(); ++i) {
+            // Without a branch on the outcome (random: about half the images go either way):
+            // both tests always, the kept index and image always written at the end of the
+            // kept list, which only grows when the image is kept (issue 22, sixth pass).
+            const std::size_t count = h.images.size();
+            kept.resize(count);
+            kept_images.resize(count);
+            std::size_t n = 0;
+            for (std::size_t i = 0; i < count; ++i) {
                 const Vec<D> q = h.images[i] - centre;
-                if (q.squaredNorm() < drop * drop || deep_inside(q)) {
-                    dropped[i] = 1;
-                } else {
-                    if constexpr (D == 3)
-                        position[i] = static_cast<int>(kept.size());
-                    kept.push_back(static_cast<int>(i));
-                    kept_images.push_back(h.images[i]);
-                }
+                const bool drop_it = (q.squaredNorm() < drop * drop) | deep_inside(q);
+                dropped[i] = static_cast<char>(drop_it);
+                if constexpr (D == 3)
+                    position[i] = static_cast<int>(n);
+                kept[n] = static_cast<int>(i);
+                kept_images[n] = h.images[i];
+                n += drop_it ? 0 : 1;
             }
+            kept.resize(n);
+            kept_images.resize(n);
             hull_input = kept_images;
             // Convex with six distinct corners (a repeated one leaves a contracted surface).
             // (Extremes are never dropped: each lies on a facet of the surface, outside the
@@ -327,16 +353,28 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         inner = std::min(inner, -f[D]);
     const Real skip = inner - 2 * tol;
     const Real skip2 = skip > 0 ? skip * skip : Real(-1);
-    // Whether some facet holds the image: the same answer whichever facet is tried first.
+    // Whether some facet holds the image: the same answer whichever facet is tried first, so
+    // all are tried at once, as vector lanes over the facets by component (issue 22, sixth
+    // pass: an image inside the hull scans every facet), with the sums of
+    // f.head(D).dot(q) + f[D]; the largest of them decides.
+    std::array<Eigen::Array<Real, Eigen::Dynamic, 1>, D + 1>& by_axis = work.facet_components;
+    const auto facet_count = static_cast<Eigen::Index>(h.facets.size());
+    for (int a = 0; a <= D; ++a) {
+        auto& c = by_axis[static_cast<std::size_t>(a)];
+        c.resize(facet_count);
+        for (Eigen::Index k = 0; k < facet_count; ++k)
+            c[k] = h.facets[static_cast<std::size_t>(k)][a];
+    }
     const auto on_a_facet = [&](const Vec<D>& q) {
-        for (const auto& f : h.facets)
-            if (f.template head<D>().dot(q) + f[D] > -tol)
-                return true;
-        return false;
+        if constexpr (D == 2)
+            return ((by_axis[0] * q[0] + by_axis[1] * q[1]) + by_axis[2]).maxCoeff() > -tol;
+        else
+            return ((by_axis[0] * q[0] + by_axis[1] * q[1] + by_axis[2] * q[2]) + by_axis[3])
+                       .maxCoeff() > -tol;
     };
-    for (std::size_t i = 0; i < h.images.size(); ++i) {
-        if (dropped[i] == 1 || h.images[i].squaredNorm() < skip2)
-            continue;
+    const auto test = [&](std::size_t i) {
+        if (h.images[i].squaredNorm() < skip2)
+            return;
         const Vec<D>& q = h.images[i];
         bool on = false;
         if (dropped[i] == 2 && on_facet[i] >= 0) {
@@ -345,6 +383,15 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         }
         if (on || on_a_facet(q))
             h.boundary.push_back(static_cast<int>(i));
+    };
+    // Only the images the prefilter kept can be on a facet (`kept` ascending, as the output).
+    if (filtered) {
+        for (const int i : kept)
+            test(static_cast<std::size_t>(i));
+    } else {
+        for (std::size_t i = 0; i < h.images.size(); ++i)
+            if (dropped[i] != 1)
+                test(i);
     }
 }
 
@@ -364,8 +411,13 @@ void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, Hull
                              MappedHullWork<D>& work, MappedHull<D>& h, std::vector<int>& candidate,
                              bool with_boundary) {
     // One pass: the candidates, their images and the images' extremes.
-    candidate.clear();
-    h.images.clear();
+    // Written through pointers into buffers sized for every offset, then cut to the count
+    // (no capacity check per candidate; issue 22, sixth pass).
+    candidate.resize(offsets.size());
+    h.images.resize(offsets.size());
+    int* const cand = candidate.data();
+    Vec<D>* const image = h.images.data();
+    int n = 0;
     Extremes<D> found;
     Real size2 = 0; // a scalar of its own: the one chain from image to image
     for (std::size_t j = 0; j < offsets.size(); ++j) {
@@ -373,11 +425,14 @@ void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, Hull
         if (r2 > 0 && r2 <= radius2) {
             const Vec<D> q = inverse_square_map<D>(offsets[j]);
             size2 = std::max(size2, q.squaredNorm());
-            found.add_directions(q, static_cast<int>(candidate.size()));
-            h.images.push_back(q);
-            candidate.push_back(static_cast<int>(j));
+            found.add_directions(q, n);
+            image[n] = q;
+            cand[n] = static_cast<int>(j);
+            ++n;
         }
     }
+    candidate.resize(static_cast<std::size_t>(n));
+    h.images.resize(static_cast<std::size_t>(n));
     found.size2 = size2;
     hull_of_images<D>(found, prefilter, with_boundary, work, h);
 }

@@ -12,6 +12,7 @@
 #include "sluice/physics/convex_hull_2d.hpp"
 #include "sluice/physics/convex_hull_3d.hpp"
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -82,6 +83,8 @@ struct MappedHullWork {
     std::vector<int> position;       // per kept image: its index in kept
     std::vector<int> on_facet;       // per corner image: a facet it lies on (-1: unknown)
     std::vector<int> corners;
+    // The facets' n and d by component (the boundary test's vector lanes).
+    std::array<Eigen::Array<Real, Eigen::Dynamic, 1>, D + 1> facet_components;
     QuadrantHullWork quadrant; // D = 2
     QuickhullWork quickhull;   // D = 3
     ConvexHull3d hull_3d;      // D = 3

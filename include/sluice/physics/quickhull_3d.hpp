@@ -37,6 +37,7 @@ struct QuickhullWork {
         Vec<3> n = Vec<3>::Zero(); // unit outward normal; n.x + d: distance above the plane
         Real d = 0;
         Real area2 = 0;    // |(v1 - v0) x (v2 - v0)|: twice the area, for the sliver test
+        Real guard = 0;    // |n.x + d| above this: its sign is the exact orientation's
         int outside = -1;  // first of the points assigned to this facet (linked by next)
         int furthest = -1; // the one farthest above it
         Real furthest_dist = 0;
@@ -45,10 +46,11 @@ struct QuickhullWork {
         bool alive = true;
     };
     std::vector<Facet> facets;
-    std::vector<int> next;     // per point: next point of the same outside set
-    std::vector<int> start_of; // per point: the new facet whose horizon edge starts there
-    std::vector<int> incident; // per point: one live facet it is a vertex of (-1: none)
-    std::vector<int> output;   // per facet: its index in quickhull_3d's `facets` (-1: none)
+    std::vector<int> next;       // per point: next point of the same outside set
+    std::vector<int> start_of;   // per point: the new facet whose horizon edge starts there
+    std::vector<int> incident;   // per point: one live facet it is a vertex of (-1: none)
+    std::vector<int> output;     // per facet: its index in quickhull_3d's `facets` (-1: none)
+    std::vector<char> is_corner; // per point: 1 when a corner
     std::vector<int> stack, visible, pending, vertices;
 };
 
