@@ -13,9 +13,14 @@ namespace sluice {
 
 template <int D>
 void RankExchange<D>::find_peers() {
-    const auto all = tasks::peer_ranks(grid_, layout_);
-    peers_ = all[static_cast<std::size_t>(comm_.rank())];
-    reach_ = tasks::two_step_ranks(all, comm_.rank());
+    // From the cells of this rank's range and its peers' ranges only, not the whole grid
+    // (issue 21): the other ranks' lists stay empty, two_step_ranks reads none of them.
+    std::vector<std::vector<int>> known(static_cast<std::size_t>(layout_.ranks()));
+    peers_ = known[static_cast<std::size_t>(comm_.rank())] =
+        tasks::peers_of(grid_, layout_, comm_.rank());
+    for (const int p : peers_)
+        known[static_cast<std::size_t>(p)] = tasks::peers_of(grid_, layout_, p);
+    reach_ = tasks::two_step_ranks(known, comm_.rank());
     halo_in_known_ = false; // counts of the old peers
 }
 

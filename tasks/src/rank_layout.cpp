@@ -1,6 +1,7 @@
 #include "sluice/tasks/rank_layout.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace sluice::tasks {
@@ -67,33 +68,40 @@ double imbalance(const std::vector<double>& cost_per_rank) {
            (total / static_cast<double>(cost_per_rank.size()));
 }
 
+MortonKey range_begin(const RankLayout& layout, int rank) {
+    return layout.key_begin[static_cast<std::size_t>(rank)];
+}
+
+MortonKey range_end(const RankLayout& layout, int rank) {
+    return rank + 1 < layout.ranks() ? layout.key_begin[static_cast<std::size_t>(rank) + 1]
+                                     : std::numeric_limits<MortonKey>::max();
+}
+
 template <int D>
-std::vector<std::vector<int>> peer_ranks(const CellGrid<D>& grid, const RankLayout& layout) {
-    const int R = layout.ranks();
-    std::vector<std::vector<char>> touch(static_cast<std::size_t>(R),
-                                         std::vector<char>(static_cast<std::size_t>(R), 0));
-    if (R > 1) {
-        const auto n = static_cast<CellIndex>(grid.cell_count());
-        std::vector<int> owner(n);
-        for (CellIndex c = 0; c < n; ++c)
-            owner[c] = layout.rank_of(grid.morton(grid.unlinear(c)));
-        NeighbourCell<D> nbr[D == 2 ? 9 : 27];
-        for (CellIndex c = 0; c < n; ++c) {
+std::vector<int> peers_of(const CellGrid<D>& grid, const RankLayout& layout, int rank) {
+    std::vector<int> out;
+    if (layout.ranks() <= 1)
+        return out;
+    NeighbourCell<D> nbr[D == 2 ? 9 : 27];
+    for_each_cell_in_keys(
+        grid, range_begin(layout, rank), range_end(layout, rank), [&](CellIndex c) {
             const int k = adjacent_cells(grid, c, nbr);
             for (int m = 0; m < k; ++m) {
-                const int o = owner[nbr[m].cell];
-                if (o != owner[c]) {
-                    touch[static_cast<std::size_t>(owner[c])][static_cast<std::size_t>(o)] = 1;
-                    touch[static_cast<std::size_t>(o)][static_cast<std::size_t>(owner[c])] = 1;
-                }
+                const int o = layout.rank_of(grid.morton(grid.unlinear(nbr[m].cell)));
+                if (o != rank && (out.empty() || out.back() != o))
+                    out.push_back(o);
             }
-        }
-    }
-    std::vector<std::vector<int>> peers(static_cast<std::size_t>(R));
-    for (int r = 0; r < R; ++r)
-        for (int s = 0; s < R; ++s)
-            if (touch[static_cast<std::size_t>(r)][static_cast<std::size_t>(s)])
-                peers[static_cast<std::size_t>(r)].push_back(s);
+        });
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+template <int D>
+std::vector<std::vector<int>> peer_ranks(const CellGrid<D>& grid, const RankLayout& layout) {
+    std::vector<std::vector<int>> peers(static_cast<std::size_t>(layout.ranks()));
+    for (int r = 0; r < layout.ranks(); ++r)
+        peers[static_cast<std::size_t>(r)] = peers_of(grid, layout, r);
     return peers;
 }
 
@@ -143,6 +151,8 @@ std::vector<std::vector<int>> halo_targets(const CellGrid<D>& grid, const RankLa
 
 template RankLayout cut_ranks_by_key<2>(const CellGrid<2>&, int);
 template RankLayout cut_ranks_by_key<3>(const CellGrid<3>&, int);
+template std::vector<int> peers_of<2>(const CellGrid<2>&, const RankLayout&, int);
+template std::vector<int> peers_of<3>(const CellGrid<3>&, const RankLayout&, int);
 template std::vector<std::vector<int>> peer_ranks<2>(const CellGrid<2>&, const RankLayout&);
 template std::vector<std::vector<int>> peer_ranks<3>(const CellGrid<3>&, const RankLayout&);
 template void adjacent_owners<2>(const CellGrid<2>&, const RankLayout&, CellIndex, int,

@@ -138,6 +138,95 @@ TEST_CASE("peer sets are symmetric in 3-D") {
     }
 }
 
+namespace {
+
+// The peers as a scan of the whole grid finds them (the O(grid) form peers_of replaced).
+template <int D>
+std::vector<std::vector<int>> peers_by_grid_scan(const CellGrid<D>& g, const RankLayout& l) {
+    std::vector<std::set<int>> sets(static_cast<std::size_t>(l.ranks()));
+    NeighbourCell<D> nbr[D == 2 ? 9 : 27];
+    for (CellIndex c = 0; c < g.cell_count(); ++c) {
+        const int own = l.rank_of(g.morton(g.unlinear(c)));
+        const int k = adjacent_cells(g, c, nbr);
+        for (int m = 0; m < k; ++m) {
+            const int o = l.rank_of(g.morton(g.unlinear(nbr[m].cell)));
+            if (o != own)
+                sets[static_cast<std::size_t>(own)].insert(o);
+        }
+    }
+    std::vector<std::vector<int>> out;
+    for (const auto& s : sets)
+        out.emplace_back(s.begin(), s.end());
+    return out;
+}
+
+// Random cut points (sorted, distinct, some past the grid's last key) on a grid whose
+// dimensions are not powers of two: a range's ends cut the Morton tree's blocks anywhere.
+template <int D>
+void check_range_walk(const CellGrid<D>& g, unsigned seed) {
+    MortonKey top = 0;
+    for (CellIndex c = 0; c < g.cell_count(); ++c)
+        top = std::max(top, g.morton(g.unlinear(c)));
+    std::uint64_t state = seed;
+    const auto next = [&] { // xorshift: reproducible, no <random> distribution differences
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        return state;
+    };
+    for (int trial = 0; trial < 20; ++trial) {
+        const int ranks = 2 + static_cast<int>(next() % 7);
+        std::set<MortonKey> cuts;
+        while (static_cast<int>(cuts.size()) < ranks - 1)
+            cuts.insert(1 + next() % (top + 3));
+        RankLayout l;
+        l.key_begin.assign(1, 0);
+        l.key_begin.insert(l.key_begin.end(), cuts.begin(), cuts.end());
+        // Every cell visited once, by the rank whose range holds its key.
+        std::vector<int> seen(g.cell_count(), 0);
+        for (int r = 0; r < ranks; ++r)
+            for_each_cell_in_keys(g, range_begin(l, r), range_end(l, r), [&](CellIndex c) {
+                CHECK(l.rank_of(g.morton(g.unlinear(c))) == r);
+                ++seen[c];
+            });
+        CHECK(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+        // The same peers as the scan of the whole grid; two steps from the lists of the rank
+        // and its peers only.
+        const auto expected = peers_by_grid_scan(g, l);
+        CHECK(peer_ranks(g, l) == expected);
+        for (int r = 0; r < ranks; ++r) {
+            std::vector<std::vector<int>> known(static_cast<std::size_t>(ranks));
+            known[static_cast<std::size_t>(r)] = peers_of(g, l, r);
+            for (const int p : known[static_cast<std::size_t>(r)])
+                known[static_cast<std::size_t>(p)] = peers_of(g, l, p);
+            CHECK(two_step_ranks(known, r) == two_step_ranks(expected, r));
+        }
+    }
+}
+
+} // namespace
+
+TEST_CASE("peers from each rank's own cells agree with a scan of the whole grid") {
+    // Issue 21: peers_of walks the rank's key range through the Morton tree, not the grid.
+    check_range_walk(CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(13, 7), 1.0, {false, false}), 1);
+    check_range_walk(CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(29, 3), 1.0, {true, false}), 2);
+    check_range_walk(CellGrid<3>::make(Vec<3>(0, 0, 0), Vec<3>(7, 5, 9), 1.0, {false, true, false}),
+                     3);
+    check_range_walk(CellGrid<3>::make(Vec<3>(0, 0, 0), Vec<3>(11, 3, 4), 1.0, {true, true, true}),
+                     4);
+    // A range inside one cell's key, an empty range, and one past the grid.
+    const auto g = CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(5, 5), 1.0, {false, false});
+    int visits = 0;
+    for_each_cell_in_keys(g, 3, 4, [&](CellIndex c) {
+        CHECK(g.morton(g.unlinear(c)) == 3);
+        ++visits;
+    });
+    CHECK(visits == 1);
+    for_each_cell_in_keys(g, 7, 7, [&](CellIndex) { ++visits; });
+    for_each_cell_in_keys(g, 1000, 2000, [&](CellIndex) { ++visits; });
+    CHECK(visits == 1);
+}
+
 TEST_CASE("interval arithmetic of the overlap figures") {
     std::vector<Interval> msgs{{0, 4}, {2, 6}, {10, 12}};
     CHECK(union_length(msgs) == doctest::Approx(8.0));
