@@ -70,8 +70,7 @@ struct StarSurface {
     static constexpr int kFacets = D == 2 ? 4 : 8;
     std::array<Vec<D>, kFacets> n;
     std::array<Eigen::Array<Real, kFacets, 1>, D> n_by_axis; // n by component (deep_inside)
-    Eigen::Array<Real, kFacets, 1> h_lanes;                  // h, the same
-    std::array<Real, kFacets> h{};
+    Eigen::Array<Real, kFacets, 1> h = Eigen::Array<Real, kFacets, 1>::Zero();
     Real rho = 0;
     bool convex = false; // every extreme not on a facet lies below its plane by the drop margin
 };
@@ -107,7 +106,7 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
         for (std::size_t t = 0; t < 4; ++t) {
             if (degenerate(corners[t])) {
                 s.n[t] = Vec<2>::Zero();
-                s.h[t] = std::numeric_limits<Real>::max();
+                s.h[static_cast<Eigen::Index>(t)] = std::numeric_limits<Real>::max();
                 continue;
             }
             const Vec<2>& a = e[static_cast<std::size_t>(corners[t][0])];
@@ -118,9 +117,9 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
                 return s;
             const Vec<2> edge = b - a;
             const Real length = edge.norm();
-            s.h[t] = cross / length;
+            s.h[static_cast<Eigen::Index>(t)] = cross / length;
             s.n[t] = Vec<2>(edge.y(), -edge.x()) / length; // right of a -> b: outward
-            rho = std::min(rho, s.h[t]);
+            rho = std::min(rho, s.h[static_cast<Eigen::Index>(t)]);
         }
     } else {
         // Octant (sx, sy, sz): the triangle of the extremes along sx x, sy y, sz z, whose
@@ -131,7 +130,7 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
             corners[t] = {sx, 2 + sy, 4 + sz};
             if (degenerate(corners[t])) {
                 s.n[t] = Vec<3>::Zero();
-                s.h[t] = std::numeric_limits<Real>::max();
+                s.h[static_cast<Eigen::Index>(t)] = std::numeric_limits<Real>::max();
                 continue;
             }
             const Vec<3>& a = e[static_cast<std::size_t>(sx)];
@@ -145,9 +144,9 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
                 return s;
             const Vec<3> m = (b - a).cross(c - a);
             const Real area2 = m.norm();
-            s.h[t] = det / area2;
+            s.h[static_cast<Eigen::Index>(t)] = det / area2;
             s.n[t] = sign * m / area2;
-            rho = std::min(rho, s.h[t]);
+            rho = std::min(rho, s.h[static_cast<Eigen::Index>(t)]);
         }
     }
     if (rho == std::numeric_limits<Real>::max())
@@ -165,15 +164,14 @@ StarSurface<D> star_surface(std::span<const Vec<D>> images, const std::array<int
             const int k = c ^ 1;
             if (std::none_of(corners[t].begin(), corners[t].end(),
                              [&](int o) { return same(o, k); }) &&
-                !(s.n[t].dot(e[static_cast<std::size_t>(k)]) - s.h[t] < -kDropMargin * rho))
+                !(s.n[t].dot(e[static_cast<std::size_t>(k)]) - s.h[static_cast<Eigen::Index>(t)] <
+                  -kDropMargin * rho))
                 s.convex = false;
         }
     }
-    for (std::size_t t = 0; t < s.n.size(); ++t) {
+    for (std::size_t t = 0; t < s.n.size(); ++t)
         for (int a = 0; a < D; ++a)
             s.n_by_axis[static_cast<std::size_t>(a)][static_cast<Eigen::Index>(t)] = s.n[t][a];
-        s.h_lanes[static_cast<Eigen::Index>(t)] = s.h[t];
-    }
     return s;
 }
 
@@ -233,21 +231,19 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         const Real margin = kDropMargin * rho;
         const Real drop = (1 - kDropMargin) * rho;
         // Inside conv(e) by more than the margin (convex surface only): below every facet
-        // plane by the margin. The own orthant's facet first, the likeliest to fail.
-        // Every facet tested, without an early exit: the 8 (4) tests run as vector lanes
-        // (issue 22, sixth pass), the same sums as n.dot(q) - h.
+        // plane by the margin. All 8 (4) planes at once as vector lanes, the same sums as
+        // n.dot(q) - h; the largest excess decides (no early exit, whose branch would
+        // mispredict: issue 22, sixth pass).
         const auto deep_inside = [&](const Vec<D>& q) {
             if (!star.convex)
                 return false;
-            // Below every plane by the margin: the largest excess decides, a reduction
-            // without the early exit (and its mispredicted branch) of all().
             if constexpr (D == 2)
-                return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1]) - star.h_lanes)
-                           .maxCoeff() < -margin;
+                return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1]) - star.h).maxCoeff() <
+                       -margin;
             else
                 return ((star.n_by_axis[0] * q[0] + star.n_by_axis[1] * q[1] +
                          star.n_by_axis[2] * q[2]) -
-                        star.h_lanes)
+                        star.h)
                            .maxCoeff() < -margin;
         };
         // The margin left inside every facet must dwarf the boundary tolerance.
@@ -384,14 +380,14 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         if (on || on_a_facet(q))
             h.boundary.push_back(static_cast<int>(i));
     };
-    // Only the images the prefilter kept can be on a facet (`kept` ascending, as the output).
+    // Only the images the prefilter kept can be on a facet (`kept` ascending, as the output);
+    // without the prefilter, every image.
     if (filtered) {
         for (const int i : kept)
             test(static_cast<std::size_t>(i));
     } else {
         for (std::size_t i = 0; i < h.images.size(); ++i)
-            if (dropped[i] != 1)
-                test(i);
+            test(i);
     }
 }
 

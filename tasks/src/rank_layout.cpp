@@ -82,16 +82,12 @@ std::vector<int> peers_of(const CellGrid<D>& grid, const RankLayout& layout, int
     std::vector<int> out;
     if (layout.ranks() <= 1)
         return out;
-    NeighbourCell<D> nbr[D == 2 ? 9 : 27];
-    for_each_cell_in_keys(
-        grid, range_begin(layout, rank), range_end(layout, rank), [&](CellIndex c) {
-            const int k = adjacent_cells(grid, c, nbr);
-            for (int m = 0; m < k; ++m) {
-                const int o = layout.rank_of(grid.morton(grid.unlinear(nbr[m].cell)));
-                if (o != rank && (out.empty() || out.back() != o))
-                    out.push_back(o);
-            }
-        });
+    std::vector<int> owners;
+    for_each_cell_in_keys(grid, range_begin(layout, rank), range_end(layout, rank),
+                          [&](CellIndex c) {
+                              adjacent_owners(grid, layout, c, rank, owners);
+                              out.insert(out.end(), owners.begin(), owners.end());
+                          });
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
