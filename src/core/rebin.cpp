@@ -1,6 +1,7 @@
 #include "sluice/core/rebin.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace sluice {
@@ -18,6 +19,9 @@ void Rebinner<D>::prepare(const CellGrid<D>& grid) {
     std::iota(morton_order_.begin(), morton_order_.end(), CellIndex{0});
     std::sort(morton_order_.begin(), morton_order_.end(),
               [&](CellIndex a, CellIndex b) { return key[a] < key[b]; });
+    morton_keys_.resize(cells);
+    for (std::size_t k = 0; k < cells; ++k)
+        morton_keys_[k] = key[morton_order_[k]];
     start_.assign(cells, 0);
 }
 
@@ -29,21 +33,32 @@ bool Rebinner<D>::operator()(const CellGrid<D>& grid, Particles<D>& P, CellRange
     key_.resize(n);
     cell_.resize(n);
     bool sorted = true;
+    MortonKey lowest = std::numeric_limits<MortonKey>::max(), highest = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const auto c = grid.coords(P.x[i]);
         key_[i] = grid.morton(c);
         cell_[i] = grid.linear(c);
+        lowest = std::min(lowest, key_[i]);
+        highest = std::max(highest, key_[i]);
         if (i > 0 && (key_[i] < key_[i - 1] || (key_[i] == key_[i - 1] && P.id[i] < P.id[i - 1])))
             sorted = false;
     }
     if (!sorted) {
-        // Counting sort by cell, cells taken in Morton order: O(n + cells), stable. The few
-        // particles that entered a cell this step then sit among its others in storage order,
-        // so each cell's run is put back in id order by an insertion sort (nearly sorted).
+        // Counting sort by cell, cells taken in Morton order, stable. The few particles that
+        // entered a cell this step then sit among its others in storage order, so each cell's
+        // run is put back in id order by an insertion sort (nearly sorted). Only the cells
+        // between the lowest and the highest key present are walked: a rank's particles lie
+        // in its own stretch of the curve (plus a little for those about to leave), so the
+        // sort costs O(n + the rank's cells), not O(n + the grid's).
         for (std::size_t i = 0; i < n; ++i)
             ++start_[cell_[i]];
+        const auto from = std::lower_bound(morton_keys_.begin(), morton_keys_.end(), lowest);
+        const auto to = std::upper_bound(from, morton_keys_.end(), highest);
+        const auto first = static_cast<std::size_t>(from - morton_keys_.begin());
+        const auto last = static_cast<std::size_t>(to - morton_keys_.begin());
         std::uint32_t running = 0;
-        for (CellIndex c : morton_order_) {
+        for (std::size_t k = first; k < last; ++k) {
+            const CellIndex c = morton_order_[k];
             const std::uint32_t count = start_[c];
             if (count == 0)
                 continue; // empty cells keep their zero
@@ -78,8 +93,7 @@ bool Rebinner<D>::operator()(const CellGrid<D>& grid, Particles<D>& P, CellRange
         key_.swap(key_sorted_);
         cell_.swap(cell_sorted_);
     }
-    ranges.begin.assign(grid.cell_count(), 0);
-    ranges.end.assign(grid.cell_count(), 0);
+    ranges.reset(grid.cell_count());
     occupied.clear();
     for (std::size_t i = 0; i < n;) {
         std::size_t j = i;
@@ -87,6 +101,7 @@ bool Rebinner<D>::operator()(const CellGrid<D>& grid, Particles<D>& P, CellRange
             ++j;
         ranges.begin[cell_[i]] = static_cast<std::uint32_t>(i);
         ranges.end[cell_[i]] = static_cast<std::uint32_t>(j);
+        ranges.owned_cells.push_back(cell_[i]);
         occupied.push_back({cell_[i], key_[i], static_cast<std::uint32_t>(j - i)});
         i = j;
     }

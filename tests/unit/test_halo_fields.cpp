@@ -48,6 +48,7 @@ struct Pair {
     std::size_t exchange(const HaloField& sent, const HaloField& received) {
         HaloFields<2> out(from, from_ranges, grid, plan, false);
         HaloFields<2> in(to, to_ranges, grid, plan, false);
+        in.record_halo_cells(true);
         out.exchanges = {sent};
         in.exchanges = {received};
         tasks::Bytes bytes;
@@ -105,6 +106,12 @@ TEST_CASE("the state brings the halo particles and their cells' ranges") {
     const CellIndex cell = pair.grid.linear(pair.grid.coords(pair.from.x[0]));
     CHECK(pair.to_ranges.begin[cell] == 0);
     CHECK(pair.to_ranges.end[cell] == 3);
+    // The unpack lists the cell it set, so that a reset clears it without a pass over the grid.
+    REQUIRE(pair.to_ranges.halo_cells.size() == 1);
+    CHECK(pair.to_ranges.halo_cells[0] == std::vector<CellIndex>{cell});
+    pair.to_ranges.reset(pair.grid.cell_count());
+    CHECK(pair.to_ranges.end[cell] == 0);
+    CHECK(pair.to_ranges.halo_cells[0].empty());
 }
 
 } // namespace

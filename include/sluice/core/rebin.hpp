@@ -16,9 +16,10 @@ struct CellOccupancy {
     std::uint32_t count;
 };
 
-// Sorts P (if needed), fills `ranges` for every cell of the grid, and lists the occupied
-// cells in Morton order. Returns true when the order changed. Keeps its buffers (and the
-// Morton order of the grid's cells) between calls: the solver rebins every step.
+// Sorts P (if needed), fills `ranges` for every cell of the grid (clearing only the cells it
+// and the halo unpacks listed there last time) and lists the occupied cells in Morton order.
+// Returns true when the order changed. Keeps its buffers and the Morton order of the grid's
+// cells between calls (the solver rebins at every Verlet-list rebuild).
 template <int D>
 class Rebinner {
 public:
@@ -29,6 +30,7 @@ private:
     void prepare(const CellGrid<D>& grid);
     std::array<int, D> dims_{};
     std::vector<CellIndex> morton_order_; // every cell of the grid, in Morton order
+    std::vector<MortonKey> morton_keys_;  // their keys (sorted)
     std::vector<std::uint32_t> start_;    // per cell: counting-sort offsets (zero between calls)
     std::vector<MortonKey> key_, key_sorted_;
     std::vector<CellIndex> cell_, cell_sorted_;

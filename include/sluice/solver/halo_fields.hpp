@@ -13,6 +13,7 @@
 
 #include <cstring>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace sluice {
@@ -59,10 +60,16 @@ template <int D>
 class HaloFields final : public tasks::HaloData {
 public:
     std::vector<HaloField> exchanges; // per exchange of the graph (graph_of_rows)
-    // Whether the state exchange records the halo cells' particle ranges: only on steps that
-    // rebuild the neighbour lists (between rebuilds the particles stay where they were sorted,
-    // although they may have moved into the next cell).
-    bool assign_cells = true;
+    // Whether this step's state exchange records the halo cells' particle ranges: only on
+    // steps that rebuild the neighbour lists (between rebuilds the particles stay where they
+    // were sorted, although they may have moved into the next cell). Called by the main
+    // thread before the step: the unpacks, which run as tasks, list the cells they set in
+    // their own peer's list of `ranges` (so that the next rebin clears only those).
+    void record_halo_cells(bool rebuilt) {
+        assign_cells_ = rebuilt;
+        if (rebuilt)
+            ranges_.halo_cells.resize(plan_.recv_offset.size());
+    }
 
     // reference_positions: with a Verlet skin, the state carries x_ref and the halo cells
     // are those of x_ref (the positions the particles were sorted by).
@@ -119,8 +126,11 @@ public:
                     col.take(col.array, i, from);
                     from += col.size;
                 }
-        if (f.state && assign_cells)
-            assign_halo_cells(first, last);
+        if (f.state && assign_cells_) {
+            if (k >= ranges_.halo_cells.size())
+                throw std::logic_error("HaloFields::unpack: record_halo_cells was not called");
+            assign_halo_cells(first, last, ranges_.halo_cells[k]);
+        }
     }
 
 private:
@@ -139,7 +149,7 @@ private:
 
     // The halo cells' particle ranges, by the cells of the sort (the positions of the last
     // rebuild).
-    void assign_halo_cells(std::size_t first, std::size_t last) {
+    void assign_halo_cells(std::size_t first, std::size_t last, std::vector<CellIndex>& listed) {
         const std::vector<Vec<D>>& sorted_by = reference_ ? P_.x_ref : P_.x;
         // The peer sent whole cells in key order: each halo cell is one contiguous run.
         for (std::size_t i = first; i < last;) {
@@ -149,6 +159,7 @@ private:
                 ++j;
             ranges_.begin[c] = static_cast<std::uint32_t>(i);
             ranges_.end[c] = static_cast<std::uint32_t>(j);
+            listed.push_back(c);
             i = j;
         }
     }
@@ -158,6 +169,7 @@ private:
     const CellGrid<D>& grid_;
     const HaloPlan& plan_;
     bool reference_;
+    bool assign_cells_ = false; // record_halo_cells
 };
 
 } // namespace sluice

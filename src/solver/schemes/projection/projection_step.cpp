@@ -411,7 +411,7 @@ void ProjectionScheme<D>::run_projection(tasks::StepGraph& graph) {
     ProjectionData<D>& d = *proj_;
     d.resize(P_.size());
     d.failed = false;
-    d.main_halo->assign_cells = neighbours_.rebuilt;
+    d.main_halo->record_halo_cells(neighbours_.rebuilt);
     for (tasks::StepGraph* g : {d.solver_graph.get(), d.correct_graph.get()})
         g->inject_receive_delay(rank_.receive_delay);
     // A task that throws must not leave peers waiting: every rank runs every graph and every

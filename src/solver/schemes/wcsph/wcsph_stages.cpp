@@ -96,7 +96,7 @@ std::unique_ptr<tasks::StepGraph> WcsphScheme<D>::build_graph(const GraphSite& s
 
 template <int D>
 void WcsphScheme<D>::run(tasks::StepGraph& graph, const tasks::StepGraph::GatePoll& gate) {
-    halo_->assign_cells = neighbours_.rebuilt;
+    halo_->record_halo_cells(neighbours_.rebuilt);
     graph.run(gate);
 }
 
