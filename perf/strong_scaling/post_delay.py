@@ -1,15 +1,16 @@
 #!/usr/bin/python3
 """How long a packed halo message waits to be posted, and what that wait costs the peer.
 
-A halo exchange is packed by a task on a worker thread and posted (MPI_Isend) by the rank's
-main thread, the only one that calls MPI (MPI_THREAD_FUNNELED), at its next poll: the main
-thread sleeps up to 1 ms between polls while tasks run (tasks/src/step_graph.cpp). Reads a
+A halo exchange is packed by a task on a worker thread and posted (MPI_Isend) by that task
+(with MPI_THREAD_MULTIPLE, the default since session 33) or, with only MPI_THREAD_FUNNELED or
+SLUICE_POST_FROM_MAIN set, by the rank's main thread at its next poll: the main thread sleeps
+up to 1 ms between polls while tasks run (tasks/src/step_graph.cpp). Reads a
 multi-rank `sluice run --trace` and reports, per exchange (`pressure`, `walls`, `velocity`;
 the `state` exchange is packed and posted by the main thread itself), the delay from the end
 of the pack to the post (median, 90th percentile), and the part of those delays during which
 the peer rank had that message's receive pending and no task running: the exposed cost, in
-µs per step summed over the ranks. Posting from the worker (MPI_THREAD_MULTIPLE) or waking
-the main thread would remove at most that.
+µs per step summed over the ranks: what posting from the main thread costs, and what posting
+from the pack task removes.
 
 Usage: perf/strong_scaling/post_delay.py TRACE.json [--skip N]
 """

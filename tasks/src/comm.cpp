@@ -33,7 +33,10 @@ MpiSession::MpiSession(int* argc, char*** argv) {
     if (init != 0) {
         MPI_Query_thread(&provided_);
     } else {
-        MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided_);
+        // MULTIPLE lets the task that packs a halo message post it (StepGraph); FUNNELED is
+        // enough for everything else, and the step graph falls back to posting from the main
+        // thread when the library gives no more.
+        MPI_Init_thread(argc, argv, MPI_THREAD_MULTIPLE, &provided_);
         owns_ = true;
     }
     if (provided_ < MPI_THREAD_FUNNELED)
@@ -237,6 +240,14 @@ void Comm::abort(int code) const {
     if (mpi_active())
         MPI_Abort(MPI_COMM_WORLD, code);
     std::exit(code);
+}
+
+bool Comm::workers_may_post() {
+    if (!mpi_active())
+        return false;
+    int provided = 0;
+    MPI_Query_thread(&provided);
+    return std::getenv("SLUICE_POST_FROM_MAIN") == nullptr && provided == MPI_THREAD_MULTIPLE;
 }
 
 std::uint64_t Comm::bytes_sent() {

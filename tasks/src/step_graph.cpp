@@ -47,6 +47,12 @@ struct StepGraph::Impl {
     std::vector<std::unique_ptr<Node>> sends; // exchange * peers + peer
     std::vector<std::unique_ptr<Node>> recvs; // exchange * peers + peer
     tbb::concurrent_queue<int> ready;         // packed sends, by (exchange * peers + peer)
+    // With workers_post, the pack task posts its message itself: its request and post time,
+    // by slot, written before the slot is pushed to `ready` and read by the main thread after
+    // it pops it (the queue orders the two).
+    bool workers_post = false;
+    std::vector<MPI_Request> worker_request;
+    std::vector<double> worker_post_time;
     // Both counters are relaxed: what orders the tasks is the graph's edges and, for the main
     // thread, wait_for_all(). A stronger order here would also hide a missing edge from
     // ThreadSanitizer (tasks that happen to run one after the other would look ordered).
@@ -138,6 +144,9 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
             gate_stage_ = s;
         }
     records_.assign(n + 2 * m, {});
+    impl_->workers_post = E > 0 && Comm::workers_may_post();
+    impl_->worker_request.assign(m, MPI_REQUEST_NULL);
+    impl_->worker_post_time.assign(m, 0.0);
     send_buf_.assign(m, {});
     recv_buf_.assign(m, {});
     impl_->waits_for.assign(n + 2 * m, {});
@@ -221,7 +230,15 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                                 halo_.data->pack(e, p, send_buf_[k]);
                         });
                         record(n + k, -1, p, e, t0);
-                        tsan::release(&send_buf_[k]); // the main thread posts it
+                        if (impl_->workers_post) {
+                            // Posted here, not at the main thread's next poll (up to 1 ms
+                            // later while tasks run): the peer may be waiting for it.
+                            MPI_Isend(send_buf_[k].data(), static_cast<int>(send_buf_[k].size()),
+                                      MPI_BYTE, halo_.peers[static_cast<std::size_t>(p)],
+                                      kTagBase + e, MPI_COMM_WORLD, &impl_->worker_request[k]);
+                            impl_->worker_post_time[k] = clock_seconds();
+                        }
+                        tsan::release(&send_buf_[k]); // the main thread posts or records it
                         impl_->ready.push(static_cast<int>(k));
                         impl_->end_task(n + k);
                     },
@@ -272,6 +289,10 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
     else
         build();
     impl_->total = impl_->nodes.size() + impl_->sends.size() + impl_->recvs.size();
+}
+
+bool StepGraph::workers_post() const {
+    return impl_->workers_post;
 }
 
 StepGraph::~StepGraph() {
@@ -353,16 +374,24 @@ void StepGraph::run_with_messages(const GatePoll& gate) {
                                  recv_buf_[k].size(), clock_seconds(), 0});
         }
     std::size_t received = 0, sent = 0;
-    // Posts the packed buffer of (exchange, peer) slot k.
-    auto post_send = [&](std::size_t k) {
+    // Posts the packed buffer of (exchange, peer) slot k, or takes over the request of the
+    // pack task that posted it.
+    auto post_send = [&](std::size_t k, bool by_worker) {
         const int e = static_cast<int>(k) / P;
         const auto p = k % static_cast<std::size_t>(P);
-        MPI_Isend(send_buf_[k].data(), static_cast<int>(send_buf_[k].size()), MPI_BYTE,
-                  halo_.peers[p], kTagBase + e, MPI_COMM_WORLD, &sreq[k]);
+        double posted = 0;
+        if (by_worker) {
+            sreq[k] = impl_->worker_request[k];
+            posted = impl_->worker_post_time[k];
+        } else {
+            MPI_Isend(send_buf_[k].data(), static_cast<int>(send_buf_[k].size()), MPI_BYTE,
+                      halo_.peers[p], kTagBase + e, MPI_COMM_WORLD, &sreq[k]);
+            posted = clock_seconds();
+        }
         Comm::count_sent(send_buf_[k].size());
         smsg[k] = messages_.size();
         messages_.push_back({halo_.exchanges[static_cast<std::size_t>(e)].name, halo_.peers[p],
-                             true, send_buf_[k].size(), clock_seconds(), 0});
+                             true, send_buf_[k].size(), posted, 0});
         ++sent;
     };
     // The state at the start of the step is ready now: it leaves before any task runs, so
@@ -376,7 +405,7 @@ void StepGraph::run_with_messages(const GatePoll& gate) {
             send_buf_[k].clear();
             halo_.data->pack(e, p, send_buf_[k]);
             record(static_cast<std::size_t>(stage_count() * groups_) + k, -1, p, e, t0);
-            post_send(k);
+            post_send(k, false);
         }
     }
     tsan::release(&run_start_token);
@@ -404,7 +433,8 @@ void StepGraph::run_with_messages(const GatePoll& gate) {
         int k = 0;
         while (impl_->ready.try_pop(k)) {
             tsan::acquire(&send_buf_[static_cast<std::size_t>(k)]);
-            post_send(static_cast<std::size_t>(k));
+            const int after = halo_.exchanges[static_cast<std::size_t>(k / P)].after_stage;
+            post_send(static_cast<std::size_t>(k), impl_->workers_post && after >= 0);
             progress = true;
         }
         if (received < m) {

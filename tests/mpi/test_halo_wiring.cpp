@@ -7,6 +7,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdlib>
+
 using namespace sluice;
 
 namespace {
@@ -97,4 +99,34 @@ TEST_CASE("boundary tasks wait for their messages; delays do not change results"
         total += tasks::take<long>(bytes, pos);
     }
     CHECK(total > 0);
+}
+
+// The pack task posts its own message when MPI gives MPI_THREAD_MULTIPLE; the main thread
+// posts it when it does not (or SLUICE_POST_FROM_MAIN says so). Same results either way.
+TEST_CASE("halo messages posted by the pack task or by the main thread give the same results") {
+    const CaseConfig cfg = read_case(case_file("dam_break_2d.toml"),
+                                     {"particles.dx=0.02", "runtime.particles_per_group=60"});
+    SimulationOptions opts;
+    opts.threads = 1;
+    REQUIRE(tasks::Comm::workers_may_post()); // Debian's Open MPI gives MPI_THREAD_MULTIPLE
+    auto run = [&](bool by_main) {
+        if (by_main)
+            setenv("SLUICE_POST_FROM_MAIN", "1", 1);
+        Simulation<2> sim(cfg, opts);
+        for (int s = 0; s < 30; ++s) {
+            sim.step();
+            CHECK(sim.graph().workers_post() == !by_main);
+        }
+        unsetenv("SLUICE_POST_FROM_MAIN");
+        return sim.gather_particles();
+    };
+    const Particles<2> by_task = run(false);
+    const Particles<2> by_main = run(true);
+    if (tasks::Comm::world().rank() == 0) {
+        REQUIRE(by_task.size() == by_main.size());
+        CHECK(by_task.id == by_main.id);
+        CHECK(by_task.x == by_main.x);
+        CHECK(by_task.v == by_main.v);
+        CHECK(by_task.rho == by_main.rho);
+    }
 }

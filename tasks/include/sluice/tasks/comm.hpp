@@ -1,7 +1,9 @@
 #pragma once
-// The only door to MPI. Everything here is called from the main thread (MPI_THREAD_FUNNELED):
-// TBB workers never touch MPI. When MPI was not initialised (unit tests, tools) the world is
-// one rank and every exchange is a no-op, so the solver has a single code path.
+// The only door to MPI. Everything here is called from the main thread; the one call a TBB
+// worker makes is the MPI_Isend of a halo message it has just packed (StepGraph, only with
+// MPI_THREAD_MULTIPLE: workers_may_post). No worker ever waits inside MPI. When MPI was not
+// initialised (unit tests, tools) the world is one rank and every exchange is a no-op, so the
+// solver has a single code path.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -14,8 +16,8 @@ namespace sluice::tasks {
 
 using Bytes = std::vector<std::byte>;
 
-// Initialises MPI for the lifetime of the object with the thread level sluice needs
-// (FUNNELED: only the main thread calls MPI) and checks that the library provides it.
+// Initialises MPI for the lifetime of the object, asking for MPI_THREAD_MULTIPLE (pack tasks
+// post their messages) and requiring at least FUNNELED (with which the main thread posts them).
 class MpiSession {
 public:
     MpiSession(int* argc, char*** argv);
@@ -87,6 +89,11 @@ public:
 
     void barrier() const;
     [[noreturn]] void abort(int code) const;
+
+    // Whether a step graph's pack tasks may post their own halo messages (MPI_Isend from a
+    // TBB worker): MPI gave MPI_THREAD_MULTIPLE, and SLUICE_POST_FROM_MAIN is not set (which
+    // keeps the main thread posting, to compare the two).
+    [[nodiscard]] static bool workers_may_post();
 
     // Bytes this rank has sent through this object's functions and the step graphs.
     [[nodiscard]] static std::uint64_t bytes_sent();

@@ -7,8 +7,9 @@
 //
 // On more than one rank, halo exchanges are nodes of the same graph. For exchange e (the
 // results of stage s_e, or the state at the start of the step when s_e = -1) and peer rank p:
-//   send(e,p)   waits for (s_e, g) of every boundary group g facing p, packs, and hands the
-//               buffer to the main thread, which posts MPI_Isend at once;
+//   send(e,p)   waits for (s_e, g) of every boundary group g facing p, packs, and posts
+//               MPI_Isend itself (with MPI_THREAD_MULTIPLE; otherwise it hands the buffer to
+//               the main thread, which posts it at its next poll, up to 1 ms later);
 //   recv(e,p)   is released by the main thread when MPI_Testsome reports the message (the
 //               MPI_Irecv was posted before any task of the step ran) and, so that it never
 //               overwrites halo data a local task still reads, by (s_e, g) of those groups;
@@ -16,8 +17,8 @@
 //   (s_e + 1, g) also waits for send(e,p): it may overwrite particles of g that the pack reads
 //               (ThreadSanitizer found the walls stage writing a wall particle's pressure
 //               while the pressure exchange packed it).
-// Interior groups depend on no message and run while messages are in flight. Only the main
-// thread calls MPI (MPI_THREAD_FUNNELED); no TBB worker ever waits inside MPI.
+// Interior groups depend on no message and run while messages are in flight. Everything else
+// in MPI (receives, completion tests) is the main thread's; no TBB worker ever waits in MPI.
 #include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
 
@@ -116,6 +117,8 @@ public:
     void run(const GatePoll& gate = {});
     // The gated stage, or -1.
     [[nodiscard]] int gate_stage() const { return gate_stage_; }
+    // Whether its pack tasks post their own messages (Comm::workers_may_post when it was built).
+    [[nodiscard]] bool workers_post() const;
 
     [[nodiscard]] int stage_count() const { return static_cast<int>(stages_.size()); }
     [[nodiscard]] int group_count() const { return groups_; }
