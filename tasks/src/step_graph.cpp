@@ -30,6 +30,13 @@ char run_start_token;
 // The gate's token: released by the main thread when it opens the gate, acquired by the gated
 // stage's nodes (their extra predecessor is the main thread's put).
 char gate_token;
+
+// Posts a halo message (from the main thread or from the pack task); returns the post time.
+double post(const Bytes& buffer, int peer, int exchange, MPI_Request* request) {
+    MPI_Isend(buffer.data(), static_cast<int>(buffer.size()), MPI_BYTE, peer, kTagBase + exchange,
+              MPI_COMM_WORLD, request);
+    return clock_seconds();
+}
 } // namespace
 
 double clock_seconds() {
@@ -230,14 +237,12 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                                 halo_.data->pack(e, p, send_buf_[k]);
                         });
                         record(n + k, -1, p, e, t0);
-                        if (impl_->workers_post) {
-                            // Posted here, not at the main thread's next poll (up to 1 ms
-                            // later while tasks run): the peer may be waiting for it.
-                            MPI_Isend(send_buf_[k].data(), static_cast<int>(send_buf_[k].size()),
-                                      MPI_BYTE, halo_.peers[static_cast<std::size_t>(p)],
-                                      kTagBase + e, MPI_COMM_WORLD, &impl_->worker_request[k]);
-                            impl_->worker_post_time[k] = clock_seconds();
-                        }
+                        // Posted here, not at the main thread's next poll (up to 1 ms later
+                        // while tasks run): the peer may be waiting for it.
+                        if (impl_->workers_post)
+                            impl_->worker_post_time[k] =
+                                post(send_buf_[k], halo_.peers[static_cast<std::size_t>(p)], e,
+                                     &impl_->worker_request[k]);
                         tsan::release(&send_buf_[k]); // the main thread posts or records it
                         impl_->ready.push(static_cast<int>(k));
                         impl_->end_task(n + k);
@@ -384,9 +389,7 @@ void StepGraph::run_with_messages(const GatePoll& gate) {
             sreq[k] = impl_->worker_request[k];
             posted = impl_->worker_post_time[k];
         } else {
-            MPI_Isend(send_buf_[k].data(), static_cast<int>(send_buf_[k].size()), MPI_BYTE,
-                      halo_.peers[p], kTagBase + e, MPI_COMM_WORLD, &sreq[k]);
-            posted = clock_seconds();
+            posted = post(send_buf_[k], halo_.peers[p], e, &sreq[k]);
         }
         Comm::count_sent(send_buf_[k].size());
         smsg[k] = messages_.size();
@@ -433,8 +436,8 @@ void StepGraph::run_with_messages(const GatePoll& gate) {
         int k = 0;
         while (impl_->ready.try_pop(k)) {
             tsan::acquire(&send_buf_[static_cast<std::size_t>(k)]);
-            const int after = halo_.exchanges[static_cast<std::size_t>(k / P)].after_stage;
-            post_send(static_cast<std::size_t>(k), impl_->workers_post && after >= 0);
+            // Only pack tasks queue slots (the start-of-step state is posted above).
+            post_send(static_cast<std::size_t>(k), impl_->workers_post);
             progress = true;
         }
         if (received < m) {
