@@ -25,7 +25,8 @@ inline const std::filesystem::path& scratch_dir() {
 }
 
 inline std::string write_case(const std::string& name, const std::string& text) {
-    const std::filesystem::path p = scratch_dir() / (name + ".toml");
+    std::filesystem::path p = scratch_dir() / name;
+    p += ".toml";
     std::ofstream(p) << text;
     return p.string();
 }

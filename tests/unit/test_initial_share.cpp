@@ -119,7 +119,7 @@ void check_case(const CaseConfig& cfg) {
 
 TEST_CASE("2-D dam break with jitter and an obstacle: counts, cuts and shares") {
     // Hydrostatic, settled (continuity), jittered fluid; dummy walls on three faces; a box.
-    std::ifstream in(std::string(SLUICE_SOURCE_DIR) + "/cases/dam_break_2d.toml");
+    std::ifstream in(std::filesystem::path(SLUICE_SOURCE_DIR) / "cases" / "dam_break_2d.toml");
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const CaseConfig cfg = read_case(
         testing::write_case("dam_break_box",
