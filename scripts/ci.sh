@@ -20,7 +20,8 @@
 # those edges order every conflicting access of the node bodies. That it does is a test:
 # tsan_missing_edge_is_reported runs a graph with a neighbourhood edge left out and passes only
 # if TSan reports the race (tests/tsan/missing_edge.cpp). Suppressions, each explained:
-# tests/tsan.supp. The sanitizer presets build at -O1 with line tables only, as unity builds,
+# tests/tsan.supp. The sanitizer presets build with line tables only, as unity builds, tsan at
+# -O1 and asan at -O0 (its build took most of the stage; test_graph_neighbour_sums keeps -O1),
 # and each stage builds only the targets it runs (CMakePresets.json).
 # Usage: scripts/ci.sh [stage...]   (default: release asan tsan fuzz). Stops at the first stage
 # that fails; prints the timings either way.
