@@ -8,8 +8,9 @@ records are aligned on the start of the impact: the first time the force exceeds
 `--rise` N (default 8 N, twice the experiment's pre-impact noise of about 4 N). Reported:
 the first-impact peak of the force (raw, and after a centred moving average of `--filter-ms`,
 default 10 ms: the digitised record has a few points per 10 ms), the mean force over the
-plateau 0.15-0.5 s after the rise, and the RMS difference of the filtered force over 0-0.5 s
-after the rise. Usage: yeh_petroff.py RUN_DIR [RUN_DIR...] [--png FILE]
+plateau 0.15-0.5 s after the rise, the impulse (the integral of the force, trapezoidal over the
+raw samples) over the first 0.15 s after the rise (the window of the first-impact peak), and the
+RMS difference of the filtered force over 0-0.5 s after the rise. Usage: yeh_petroff.py RUN_DIR [RUN_DIR...] [--png FILE]
 """
 from __future__ import annotations
 
@@ -48,7 +49,11 @@ def metrics(t: np.ndarray, f: np.ndarray, rise: float, filter_s: float) -> dict:
     t0 = t[hit[0]]
     w = (t >= t0) & (t <= t0 + 0.15)
     plateau = (t >= t0 + 0.15) & (t <= t0 + 0.5)
+    # impulse over [t0, t0 + 0.15 s], the window ends interpolated
+    ti = np.concatenate(([t0], t[w & (t > t0) & (t < t0 + 0.15)], [t0 + 0.15]))
+    impulse = float(np.trapz(np.interp(ti, t, f), ti))
     return {"t_rise": float(t0), "peak_raw": float(f[w].max()), "peak_filt": float(ff[w].max()),
+            "impulse": impulse,
             "plateau": float(ff[plateau].mean()) if plateau.any() else math.nan,
             "t_end_after_rise": float(t[-1] - t0), "tf": t - t0, "ff": ff}
 
@@ -64,7 +69,7 @@ def main() -> int:
     te, fe = load_exp()
     e = metrics(te, fe, a.rise, fs)
     print(f"experiment   rise at t = {e['t_rise']:.3f} s (figure time)  peak {e['peak_raw']:.1f} N "
-          f"(filtered {e['peak_filt']:.1f} N)  plateau {e['plateau']:.1f} N")
+          f"(filtered {e['peak_filt']:.1f} N)  impulse {e['impulse']:.2f} N s  plateau {e['plateau']:.1f} N")
     curves = [("experiment", e)]
     for run in a.runs:
         t, f = load_run(run)
@@ -78,6 +83,7 @@ def main() -> int:
         rms = float(np.sqrt(np.mean((np.interp(e["tf"][sel], m["tf"], m["ff"]) - e["ff"][sel]) ** 2)))
         print(f"{str(run):40s} rise at t = {m['t_rise']:.3f} s  peak {m['peak_raw']:.1f} N "
               f"(filtered {m['peak_filt']:.1f} N, {m['peak_filt'] / e['peak_filt']:.2f} x exp)  "
+              f"impulse {m['impulse']:.2f} N s ({m['impulse'] / e['impulse']:.2f} x exp)  "
               f"plateau {m['plateau']:.1f} N ({m['plateau'] / e['plateau']:.2f} x exp)  "
               f"RMS vs exp over {lo:.1f}-{hi:.2f} s after the rise {rms:.1f} N")
         curves.append((run.name, m))
