@@ -23,7 +23,7 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-import analyse  # noqa: E402  (moving_average on irregular samples)
+import analyse  # noqa: E402  (moving_average and integral on irregular samples)
 
 EXP = HERE / "data" / "yeh_petroff_column_force.csv"
 
@@ -49,11 +49,8 @@ def metrics(t: np.ndarray, f: np.ndarray, rise: float, filter_s: float) -> dict:
     t0 = t[hit[0]]
     w = (t >= t0) & (t <= t0 + 0.15)
     plateau = (t >= t0 + 0.15) & (t <= t0 + 0.5)
-    # impulse over [t0, t0 + 0.15 s], the window ends interpolated
-    ti = np.concatenate(([t0], t[w & (t > t0) & (t < t0 + 0.15)], [t0 + 0.15]))
-    impulse = float(np.trapz(np.interp(ti, t, f), ti))
     return {"t_rise": float(t0), "peak_raw": float(f[w].max()), "peak_filt": float(ff[w].max()),
-            "impulse": impulse,
+            "impulse": analyse.integral(t, f, t0, t0 + 0.15),
             "plateau": float(ff[plateau].mean()) if plateau.any() else math.nan,
             "t_end_after_rise": float(t[-1] - t0), "tf": t - t0, "ff": ff}
 
