@@ -35,6 +35,60 @@ struct MomentumParams {
     Real p_floor = 0; // lowest pressure a fluid-wall pair acts with (background pressure)
 };
 
+// Monaghan's (1992) artificial viscosity as the pair's addition to the coefficient of
+// -m_j grad W: alpha c0 h (v_ij . x_ij) / ((r^2 + eta^2) rho_ij) with the mean density rho_ij,
+// for an approaching pair (vr = min(v_ij . x_ij, 0)); av = alpha c0 h. One definition for the
+// scalar loop below and the four-lane one (momentum_lanes.hpp): T is Real or Real4
+// (core/lanes.hpp).
+template <class T>
+T artificial_viscosity(Real av, const T& vr, const T& r2, Real eta2, Real rho_i, const T& rho_j) {
+    return av * vr / ((r2 + eta2) * (Real(0.5) * (rho_i + rho_j)));
+}
+
+// The laminar viscous term's factor of v_ij (Morris et al. 1997): m_j 2 mu / (rho_i rho_j)
+// F r^2 / (r^2 + eta^2), with F = (dW/dr)/r, so that F r^2/(r^2 + eta^2) is
+// (x_ij . grad_i W_ij)/(r^2 + eta^2). T is Real or Real4, as above.
+template <class T>
+T laminar_viscosity(const T& m_j, Real two_mu, Real rho_i, const T& rho_j, const T& factor,
+                    const T& r2, Real eta2) {
+    return m_j * two_mu / (rho_i * rho_j) * (factor * r2 / (r2 + eta2));
+}
+
+// What the acceleration of a fluid particle reads of one neighbour, packed so that a pair
+// loads one cache line instead of a value from each of six arrays (2-D: 64 bytes, which
+// momentum_lanes.hpp turns into four pairs' lanes with two transposes).
+// Aligned to a cache line in 2-D (a record that straddles two lines costs two loads, and two
+// threads writing neighbouring records would share a line).
+template <int D>
+struct alignas(D == 2 ? 64 : 32) MomentumNeighbour {
+    Vec<D> x = Vec<D>::Zero(); // position
+    Vec<D> v = Vec<D>::Zero(); // velocity; a wall particle's boundary velocity v_bc
+    Real rho = 0;              // density
+    Real m = 0;                // mass
+    Real p_over_rho2 = 0;      // p/rho^2; a wall particle's max(p, p_floor)/rho^2 (see above)
+    Real wall = 0;             // 1 for a wall particle, 0 for a fluid one
+};
+
+// Writes the record of particle j to n: a fluid particle's once its pressure is known, a
+// wall particle's once the wall state is (walls.hpp).
+template <int D>
+void write_momentum_neighbour(const Particles<D>& P, Real p_floor, std::uint32_t j,
+                              MomentumNeighbour<D>& n) {
+    const Real rho = P.rho[j];
+    n.x = P.x[j];
+    n.rho = rho;
+    n.m = P.mass[j];
+    if (P.kind[j] == Kind::wall) {
+        n.v = P.v_bc[j];
+        n.p_over_rho2 = std::max(P.p[j], p_floor) / (rho * rho);
+        n.wall = 1;
+    } else {
+        n.v = P.v[j];
+        n.p_over_rho2 = P.p_over_rho2[j];
+        n.wall = 0;
+    }
+}
+
 namespace detail {
 
 // The momentum equation's sum over the neighbours of fluid particle i, with the laminar and
@@ -88,13 +142,13 @@ SLUICE_FLATTEN void acceleration_cell(const Neighbourhood<D>& nb, const K& kerne
             if (laminar || artificial) {
                 const Vec<D> v_ij = v_i - (wall ? v_bc[j] : vel[j]);
                 if (laminar)
-                    pair = m_j * two_mu / (rho_i * rho_j) * (dWr * r2 / (r2 + eta2)) * v_ij;
+                    pair = laminar_viscosity(m_j, two_mu, rho_i, rho_j, dWr, r2, eta2) * v_ij;
                 if (artificial) {
                     // Only approaching pairs (v_ij . x_ij < 0) feel it. min() instead of an
                     // `if`: about half the pairs approach, so the branch mispredicted often;
                     // for the others the term is an exact zero.
                     const Real vr = std::min(v_ij.dot(dx), Real(0));
-                    s -= av * vr / ((r2 + eta2) * (Real(0.5) * (rho_i + rho_j)));
+                    s -= artificial_viscosity(av, vr, r2, eta2, rho_i, rho_j);
                 }
             }
             return pair - m_j * s * gradW;

@@ -2,6 +2,7 @@
 // The weakly compressible scheme (docs/ARCHITECTURE.md, "The step as a graph"): its stage
 // table, the halo fields its stages send, and the stage bodies (wcsph_stages.cpp).
 #include "sluice/physics/density.hpp"
+#include "sluice/physics/momentum_lanes.hpp"
 #include "sluice/physics/riemann.hpp"
 #include "sluice/solver/halo_fields.hpp"
 
@@ -43,10 +44,12 @@ private:
         StageKind kind;
     };
     // The step's stages, one row each (wcsph_stages.cpp).
-    [[nodiscard]] std::vector<Stage> stage_table() const;
+    [[nodiscard]] std::vector<Stage> stage_table();
     void run_stage(int stage, int group);
     template <class K>
     void run_stage_with(const K& kernel, int stage, int group);
+    // The acceleration of cell c's fluid particles from momentum_records_ (momentum_lanes_).
+    void accelerate_by_lanes(const Neighbourhood<D>& nb, CellIndex c);
 
     // The units it is lent (step_scheme.hpp).
     const CaseParams<D> case_;
@@ -71,6 +74,12 @@ private:
     // What the stages before the gated one write (keep_ahead), owned particles only.
     Particles<D> kept_;
     std::unique_ptr<HaloFields<D>> halo_;
+    // In 2-D the acceleration reads its neighbours as packed records, four pairs per
+    // instruction (momentum_lanes.hpp). Owned, then halo, like the particle arrays: fluid
+    // particles' written by the density stage (with their pressure), wall particles' by the
+    // walls stage, each sent to the other ranks with that stage's halo field.
+    bool momentum_lanes_ = false;
+    std::vector<MomentumNeighbour<D>> momentum_records_, kept_momentum_records_;
 };
 
 } // namespace sluice

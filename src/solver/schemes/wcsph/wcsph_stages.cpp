@@ -37,33 +37,39 @@ WcsphScheme<D>::WcsphScheme(const CaseParams<D>& params, Particles<D>& P, const 
                                 Real(cfg.sound_speed),       Real(3),
                                 case_.momentum.mu,           case_.momentum.h,
                                 case_.momentum.wall_viscous, case_.momentum.p_floor};
+    momentum_lanes_ = acceleration_uses_lanes<D>() && !riemann_dissipation_;
     halo_ = std::make_unique<HaloFields<D>>(P_, cells_.ranges, cells_.grid, rank_.plan, skin() > 0);
 }
 
 enum class WcsphStage : std::uint8_t { density, walls, accel, kick, drift };
 
 template <int D>
-std::vector<typename WcsphScheme<D>::Stage> WcsphScheme<D>::stage_table() const {
+std::vector<typename WcsphScheme<D>::Stage> WcsphScheme<D>::stage_table() {
     using tasks::Reach;
     // Each row: the stage, and the halo field its results travel as (the particles it
     // carries, the arrays it copies: what the next stages read of a neighbour). Before the
     // first stage the state travels.
     std::vector<Stage> rows;
-    HaloField pressure{"pressure",
-                       std::nullopt,
-                       {halo_column(P_.p), halo_column(P_.p_over_rho2), halo_column(P_.volume)}};
+    HaloField pressure{"pressure", std::nullopt, {halo_column(P_.p), halo_column(P_.volume)}};
     if (!continuity_) // summation density
         pressure.columns.push_back(halo_column(P_.rho));
     if (density_gradient_)
         pressure.columns.push_back(halo_column(P_.grad_rho));
+    // p/rho^2 is read only by the acceleration: in the record when it has one.
+    if (momentum_lanes_)
+        pressure.columns.push_back(halo_column(momentum_records_));
+    else
+        pressure.columns.push_back(halo_column(P_.p_over_rho2));
     rows.push_back({{"density", Reach::neighbourhood, pressure}, StageKind::density});
-    if (case_.cfg.walls == WallModel::dummy)
-        rows.push_back({{"walls", Reach::neighbourhood,
-                         HaloField{"walls",
-                                   Kind::wall,
-                                   {halo_column(P_.p), halo_column(P_.rho), halo_column(P_.mass),
-                                    halo_column(P_.v_bc)}}},
-                        StageKind::walls});
+    if (case_.cfg.walls == WallModel::dummy) {
+        HaloField walls{
+            "walls",
+            Kind::wall,
+            {halo_column(P_.p), halo_column(P_.rho), halo_column(P_.mass), halo_column(P_.v_bc)}};
+        if (momentum_lanes_)
+            walls.columns.push_back(halo_column(momentum_records_));
+        rows.push_back({{"walls", Reach::neighbourhood, walls}, StageKind::walls});
+    }
     rows.push_back({{"accel", Reach::neighbourhood, std::nullopt}, StageKind::accel});
     // The continuity rate reads the neighbours' kicked velocities; summation needs nothing.
     std::optional<HaloField> velocity;
@@ -97,6 +103,8 @@ std::unique_ptr<tasks::StepGraph> WcsphScheme<D>::build_graph(const GraphSite& s
 template <int D>
 void WcsphScheme<D>::run(tasks::StepGraph& graph, const tasks::StepGraph::GatePoll& gate) {
     halo_->record_halo_cells(neighbours_.rebuilt);
+    if (momentum_lanes_) // the halo's size is known before the graph runs
+        momentum_records_.resize(P_.size());
     graph.run(gate);
 }
 
@@ -119,6 +127,8 @@ void WcsphScheme<D>::each_ahead_array(F&& f) {
     }
     if (case_.cfg.shifting <= 0)
         f(P_.a, kept_.a);
+    if (momentum_lanes_)
+        f(momentum_records_, kept_momentum_records_);
 }
 
 template <int D>
@@ -135,6 +145,19 @@ void WcsphScheme<D>::restore_ahead(std::size_t owned) {
             throw std::logic_error("restore_ahead: not what keep_ahead kept");
         std::copy(kept.begin(), kept.end(), live.begin());
     });
+}
+
+template <int D>
+void WcsphScheme<D>::accelerate_by_lanes([[maybe_unused]] const Neighbourhood<D>& nb,
+                                         [[maybe_unused]] CellIndex c) {
+#if defined(__AVX__) && !defined(SLUICE_SINGLE_PRECISION)
+    if constexpr (D == 2) {
+        acceleration_lanes(nb, case_.momentum, c, P_, momentum_records_.data(),
+                           std::span<Vec<D>>(P_.a));
+        return;
+    }
+#endif
+    throw std::logic_error("accelerate_by_lanes: this build or dimension has no lanes");
 }
 
 template <int D>
@@ -186,17 +209,30 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
             }
             equation_of_state(nb, case_.eos, c, P_, std::span<Real>(P_.p),
                               std::span<Real>(P_.p_over_rho2), std::span<Real>(P_.volume));
+            if (momentum_lanes_) // wall particles in the walls stage, once their state is known
+                for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                    if (P_.kind[i] == Kind::fluid)
+                        write_momentum_neighbour(P_, case_.momentum.p_floor, i,
+                                                 momentum_records_[i]);
         }
         break;
     case StageKind::walls:
         for (CellIndex c : cells)
             dummy_wall_state(nb, kernel, case_.eos, case_.momentum.gravity, case_.cfg.no_slip,
                              Real(std::pow(case_.cfg.dx, D)), c, P_);
+        if (momentum_lanes_)
+            for (CellIndex c : cells)
+                for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                    if (P_.kind[i] == Kind::wall)
+                        write_momentum_neighbour(P_, case_.momentum.p_floor, i,
+                                                 momentum_records_[i]);
         break;
     case StageKind::accel:
         for (CellIndex c : cells) {
             if (riemann_dissipation_)
                 riemann_acceleration(nb, kernel, riemann_, c, P_, std::span<Vec<D>>(P_.a));
+            else if (momentum_lanes_)
+                accelerate_by_lanes(nb, c);
             else
                 acceleration(nb, kernel, case_.momentum, c, P_, std::span<Vec<D>>(P_.a));
             if (case_.cfg.shifting > 0) {

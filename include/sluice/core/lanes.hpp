@@ -1,0 +1,48 @@
+#pragma once
+// Four double lanes for pair loops that read a neighbour's fields as one packed record: GCC's
+// vector types (the arithmetic operators, comparisons and `?:` work lane by lane) and the AVX
+// shuffles that turn four 32-byte rows into four lanes. Only where the build targets AVX
+// (SLUICE_NATIVE on a machine that has it); callers keep a scalar path for the others.
+// No physics here: the pair formulas are in include/sluice/physics/.
+#include "sluice/core/types.hpp"
+
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
+
+namespace sluice {
+
+#if defined(__AVX__) && !defined(SLUICE_SINGLE_PRECISION)
+inline constexpr bool lanes_available = true;
+
+using Real4 = double __attribute__((vector_size(32)));
+using Mask4 = long long __attribute__((vector_size(32))); // all bits set in a true lane
+
+// The 32 bytes at p (aligned) as four lanes.
+inline Real4 load_lanes(const Real* p) {
+    return Real4(_mm256_load_pd(p));
+}
+
+// Rows a, b, c, d of four values each become columns: afterwards a holds the first value of
+// each row, b the second, c the third, d the fourth (a 4x4 transpose in eight shuffles).
+inline void transpose_lanes(Real4& a, Real4& b, Real4& c, Real4& d) {
+    const __m256d t0 = _mm256_unpacklo_pd(__m256d(a), __m256d(b)); // a0 b0 a2 b2
+    const __m256d t1 = _mm256_unpackhi_pd(__m256d(a), __m256d(b)); // a1 b1 a3 b3
+    const __m256d t2 = _mm256_unpacklo_pd(__m256d(c), __m256d(d)); // c0 d0 c2 d2
+    const __m256d t3 = _mm256_unpackhi_pd(__m256d(c), __m256d(d)); // c1 d1 c3 d3
+    a = Real4(_mm256_permute2f128_pd(t0, t2, 0x20));
+    b = Real4(_mm256_permute2f128_pd(t1, t3, 0x20));
+    c = Real4(_mm256_permute2f128_pd(t0, t2, 0x31));
+    d = Real4(_mm256_permute2f128_pd(t1, t3, 0x31));
+}
+
+// The lanes' sum in a fixed order, ((l0 + l1) + (l2 + l3)): with a fixed assignment of pairs to
+// lanes, a sum over lanes is as reproducible as a sequential one.
+inline Real sum_lanes(const Real4& v) {
+    return (v[0] + v[1]) + (v[2] + v[3]);
+}
+#else
+inline constexpr bool lanes_available = false;
+#endif
+
+} // namespace sluice
