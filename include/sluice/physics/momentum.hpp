@@ -160,18 +160,28 @@ SLUICE_FLATTEN void acceleration_cell(const Neighbourhood<D>& nb, const K& kerne
 
 } // namespace detail
 
+// Calls f.template operator()<Viscous, Artificial>() with the scene's two viscosity switches
+// as compile-time constants (laminar: mu > 0; artificial: alpha h c0 > 0), for the pair loops
+// that are compiled once per combination (here and momentum_lanes.hpp).
+template <int D, class F>
+void with_viscosity_switches(const MomentumParams<D>& prm, F&& f) {
+    const bool viscous = prm.mu > 0, artificial = prm.alpha * prm.h * prm.c0 > 0;
+    if (viscous && artificial)
+        f.template operator()<true, true>();
+    else if (viscous)
+        f.template operator()<true, false>();
+    else if (artificial)
+        f.template operator()<false, true>();
+    else
+        f.template operator()<false, false>();
+}
+
 template <int D, class K>
 void acceleration(const Neighbourhood<D>& nb, const K& kernel, const MomentumParams<D>& prm,
                   CellIndex c, const Particles<D>& P, std::span<Vec<D>> a_out) {
-    const bool viscous = prm.mu > 0, artificial = prm.alpha * prm.h * prm.c0 > 0;
-    if (viscous && artificial)
-        detail::acceleration_cell<D, K, true, true>(nb, kernel, prm, c, P, a_out);
-    else if (viscous)
-        detail::acceleration_cell<D, K, true, false>(nb, kernel, prm, c, P, a_out);
-    else if (artificial)
-        detail::acceleration_cell<D, K, false, true>(nb, kernel, prm, c, P, a_out);
-    else
-        detail::acceleration_cell<D, K, false, false>(nb, kernel, prm, c, P, a_out);
+    with_viscosity_switches(prm, [&]<bool Viscous, bool Artificial>() {
+        detail::acceleration_cell<D, K, Viscous, Artificial>(nb, kernel, prm, c, P, a_out);
+    });
 }
 
 } // namespace sluice

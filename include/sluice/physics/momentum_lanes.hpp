@@ -14,6 +14,8 @@
 #include "sluice/core/lanes.hpp"
 #include "sluice/physics/momentum.hpp"
 
+#include <stdexcept>
+
 namespace sluice {
 
 #if defined(__AVX__) && !defined(SLUICE_SINGLE_PRECISION)
@@ -100,23 +102,27 @@ acceleration_lanes_cell(const Neighbourhood<2>& nb, const MomentumParams<2>& prm
 
 } // namespace detail
 
-// The acceleration of the fluid particles of cell c from the records of their neighbours
-// (write_momentum_neighbour, for for every particle the list names), over a list that covers c.
-inline void acceleration_lanes(const Neighbourhood<2>& nb, const MomentumParams<2>& prm,
-                               CellIndex c, const Particles<2>& P,
-                               const MomentumNeighbour<2>* records, std::span<Vec<2>> a_out) {
-    const bool viscous = prm.mu > 0, artificial = prm.alpha * prm.h * prm.c0 > 0;
-    if (viscous && artificial)
-        detail::acceleration_lanes_cell<true, true>(nb, prm, c, P, records, a_out);
-    else if (viscous)
-        detail::acceleration_lanes_cell<true, false>(nb, prm, c, P, records, a_out);
-    else if (artificial)
-        detail::acceleration_lanes_cell<false, true>(nb, prm, c, P, records, a_out);
-    else
-        detail::acceleration_lanes_cell<false, false>(nb, prm, c, P, records, a_out);
-}
-
 #endif
+
+// The acceleration of the fluid particles of cell c from the records of their neighbours
+// (write_momentum_neighbour, for every particle the list names), over a list that covers c.
+// Only where acceleration_uses_lanes<D>(): elsewhere calling it is a logic error.
+template <int D>
+void acceleration_lanes([[maybe_unused]] const Neighbourhood<D>& nb,
+                        [[maybe_unused]] const MomentumParams<D>& prm, [[maybe_unused]] CellIndex c,
+                        [[maybe_unused]] const Particles<D>& P,
+                        [[maybe_unused]] const MomentumNeighbour<D>* records,
+                        [[maybe_unused]] std::span<Vec<D>> a_out) {
+#if defined(__AVX__) && !defined(SLUICE_SINGLE_PRECISION)
+    if constexpr (D == 2) {
+        with_viscosity_switches(prm, [&]<bool Viscous, bool Artificial>() {
+            detail::acceleration_lanes_cell<Viscous, Artificial>(nb, prm, c, P, records, a_out);
+        });
+        return;
+    }
+#endif
+    throw std::logic_error("acceleration_lanes: this build or dimension has no lanes");
+}
 
 // Whether acceleration_lanes computes the acceleration: in 2-D, in a build with four double
 // lanes.

@@ -48,8 +48,6 @@ private:
     void run_stage(int stage, int group);
     template <class K>
     void run_stage_with(const K& kernel, int stage, int group);
-    // The acceleration of cell c's fluid particles from momentum_records_ (momentum_lanes_).
-    void accelerate_by_lanes(const Neighbourhood<D>& nb, CellIndex c);
 
     // The units it is lent (step_scheme.hpp).
     const CaseParams<D> case_;

@@ -148,19 +148,6 @@ void WcsphScheme<D>::restore_ahead(std::size_t owned) {
 }
 
 template <int D>
-void WcsphScheme<D>::accelerate_by_lanes([[maybe_unused]] const Neighbourhood<D>& nb,
-                                         [[maybe_unused]] CellIndex c) {
-#if defined(__AVX__) && !defined(SLUICE_SINGLE_PRECISION)
-    if constexpr (D == 2) {
-        acceleration_lanes(nb, case_.momentum, c, P_, momentum_records_.data(),
-                           std::span<Vec<D>>(P_.a));
-        return;
-    }
-#endif
-    throw std::logic_error("accelerate_by_lanes: this build or dimension has no lanes");
-}
-
-template <int D>
 void WcsphScheme<D>::run_stage(int stage, int group) {
     std::visit([&](const auto& k) { run_stage_with(k, stage, group); }, case_.kernel);
 }
@@ -232,7 +219,8 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
             if (riemann_dissipation_)
                 riemann_acceleration(nb, kernel, riemann_, c, P_, std::span<Vec<D>>(P_.a));
             else if (momentum_lanes_)
-                accelerate_by_lanes(nb, c);
+                acceleration_lanes(nb, case_.momentum, c, P_, momentum_records_.data(),
+                                   std::span<Vec<D>>(P_.a));
             else
                 acceleration(nb, kernel, case_.momentum, c, P_, std::span<Vec<D>>(P_.a));
             if (case_.cfg.shifting > 0) {
