@@ -36,6 +36,19 @@ inline void transpose_lanes(Real4& a, Real4& b, Real4& c, Real4& d) {
     d = Real4(_mm256_permute2f128_pd(t1, t3, 0x31));
 }
 
+// Two consecutive values at each of four addresses as two sets of lanes: first = (p0[0], p1[0],
+// p2[0], p3[0]), second = (p0[1], p1[1], p2[1], p3[1]): four 16-byte loads and two shuffles, for
+// a field stored as pairs (a 2-D vector) read at four particles.
+inline void load_pair_lanes(const Real* p0, const Real* p1, const Real* p2, const Real* p3,
+                            Real4& first, Real4& second) {
+    const __m256d a = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p0)),
+                                           _mm_loadu_pd(p2), 1); // p0[0] p0[1] p2[0] p2[1]
+    const __m256d b = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(p1)),
+                                           _mm_loadu_pd(p3), 1); // p1[0] p1[1] p3[0] p3[1]
+    first = Real4(_mm256_unpacklo_pd(a, b));
+    second = Real4(_mm256_unpackhi_pd(a, b));
+}
+
 // The lanes' sum in a fixed order, ((l0 + l1) + (l2 + l3)): with a fixed assignment of pairs to
 // lanes, a sum over lanes is as reproducible as a sequential one.
 inline Real sum_lanes(const Real4& v) {

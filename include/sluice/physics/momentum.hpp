@@ -56,7 +56,9 @@ T laminar_viscosity(const T& m_j, Real two_mu, Real rho_i, const T& rho_j, const
 
 // What the acceleration of a fluid particle reads of one neighbour, packed so that a pair
 // loads one cache line instead of a value from each of six arrays (2-D: 64 bytes, which
-// momentum_lanes.hpp turns into four pairs' lanes with two transposes).
+// momentum_lanes.hpp turns into four pairs' lanes with two transposes). The 2-D continuity
+// rate reads its x, rho, m and wall flag too (continuity_lanes.hpp): within a step they are
+// the values it needs.
 // Aligned to a cache line in 2-D (a record that straddles two lines costs two loads, and two
 // threads writing neighbouring records would share a line).
 template <int D>

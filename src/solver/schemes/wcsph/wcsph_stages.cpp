@@ -6,6 +6,7 @@
 // rows alone.
 #include "wcsph_scheme.hpp"
 
+#include "sluice/physics/continuity_lanes.hpp"
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/drift.hpp"
 #include "sluice/physics/integrator.hpp"
@@ -253,6 +254,9 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                 riemann_continuity_rate(nb, kernel, riemann_, c, P_,
                                         std::span<const Vec<D>>(P_.v_half),
                                         std::span<Real>(P_.drho));
+            else if (continuity_ && momentum_lanes_) // the records hold x, rho, m, wall
+                continuity_rate_lanes(nb, diffusion_, c, P_, momentum_records_.data(),
+                                      std::span<const Vec<D>>(P_.v_half), std::span<Real>(P_.drho));
             else if (continuity_)
                 continuity_rate(nb, kernel, diffusion_, c, P_, std::span<const Vec<D>>(P_.v_half),
                                 std::span<Real>(P_.drho));
