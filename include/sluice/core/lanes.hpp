@@ -1,14 +1,18 @@
 #pragma once
 // Four double lanes for pair loops that read a neighbour's fields as one packed record: GCC's
 // vector types (the arithmetic operators, comparisons and `?:` work lane by lane) and the AVX
-// shuffles that turn four 32-byte rows into four lanes. Only where the build targets AVX
-// (SLUICE_NATIVE on a machine that has it); callers keep a scalar path for the others.
+// shuffles that turn four 32-byte rows into four lanes; with AVX2, a store that keeps the lanes
+// a mask selects (for filtering a list). Only where the build targets AVX (SLUICE_NATIVE on a
+// machine that has it); callers keep a scalar path for the others.
 // No physics here: the pair formulas are in include/sluice/physics/.
 #include "sluice/core/types.hpp"
 
 #if defined(__AVX__)
 #include <immintrin.h>
 #endif
+
+#include <array>
+#include <cstdint>
 
 namespace sluice {
 
@@ -54,8 +58,71 @@ inline void load_pair_lanes(const Real* p0, const Real* p1, const Real* p2, cons
 inline Real sum_lanes(const Real4& v) {
     return (v[0] + v[1]) + (v[2] + v[3]);
 }
+
+#if defined(__AVX2__)
+inline constexpr bool compress_available = true;
+
+namespace detail {
+// For each 4-bit lane mask: the indices that move the masked lanes, in order, to the front;
+// the lanes after them take lane 0 (their values are written past the end and overwritten).
+// Bytes for four 32-bit values (pshufb), 32-bit halves for four 64-bit values (vpermd).
+consteval std::array<std::array<std::uint8_t, 16>, 16> compress_bytes_32() {
+    std::array<std::array<std::uint8_t, 16>, 16> t{};
+    for (int m = 0; m < 16; ++m) {
+        int k = 0;
+        for (int l = 0; l < 4; ++l)
+            if (m & (1 << l)) {
+                for (int b = 0; b < 4; ++b)
+                    t[m][4 * k + b] = static_cast<std::uint8_t>(4 * l + b);
+                ++k;
+            }
+        for (; k < 4; ++k)
+            for (int b = 0; b < 4; ++b)
+                t[m][4 * k + b] = static_cast<std::uint8_t>(b);
+    }
+    return t;
+}
+consteval std::array<std::array<std::int32_t, 8>, 16> compress_halves_64() {
+    std::array<std::array<std::int32_t, 8>, 16> t{};
+    for (int m = 0; m < 16; ++m) {
+        int k = 0;
+        for (int l = 0; l < 4; ++l)
+            if (m & (1 << l)) {
+                t[m][2 * k] = 2 * l;
+                t[m][2 * k + 1] = 2 * l + 1;
+                ++k;
+            }
+        for (; k < 4; ++k) {
+            t[m][2 * k] = 0;
+            t[m][2 * k + 1] = 1;
+        }
+    }
+    return t;
+}
+alignas(64) inline constexpr auto compress_32 = compress_bytes_32();
+alignas(64) inline constexpr auto compress_64 = compress_halves_64();
+} // namespace detail
+
+// Stores the lanes of `ids` and `values` whose bit is set in `mask` (bit l: lane l), in lane
+// order, at ids_out[0..] and values_out[0..], and returns how many. Four values are written to
+// each output whatever the mask: both need room for four.
+inline int compress_store(int mask, __m128i ids, Real4 values, std::uint32_t* ids_out,
+                          Real* values_out) {
+    const __m128i byte_order = _mm_load_si128(reinterpret_cast<const __m128i*>(
+        detail::compress_32[static_cast<std::size_t>(mask)].data()));
+    const __m256i half_order = _mm256_load_si256(reinterpret_cast<const __m256i*>(
+        detail::compress_64[static_cast<std::size_t>(mask)].data()));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(ids_out), _mm_shuffle_epi8(ids, byte_order));
+    _mm256_storeu_pd(values_out, _mm256_castsi256_pd(_mm256_permutevar8x32_epi32(
+                                     _mm256_castpd_si256(__m256d(values)), half_order)));
+    return __builtin_popcount(static_cast<unsigned>(mask));
+}
+#else
+inline constexpr bool compress_available = false;
+#endif
 #else
 inline constexpr bool lanes_available = false;
+inline constexpr bool compress_available = false;
 #endif
 
 } // namespace sluice

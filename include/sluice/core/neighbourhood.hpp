@@ -3,6 +3,7 @@
 // cells in the order of adjacent_cells(), particles inside a cell by id) is what makes every
 // neighbour sum, and so the whole result, independent of threads, groups and ranks.
 #include "sluice/core/cell_grid.hpp"
+#include "sluice/core/lanes.hpp"
 
 #include <array>
 #include <span>
@@ -119,14 +120,14 @@ struct Neighbourhood {
     using Dx = std::array<Real, D>;
 
     // The sums over the pairs of i of f(j, dx, r2, factor(r2)) -> std::array<Real, N>
-    // (N <= 9: the renormalised density gradient's 3-D matrix and vector), with dx = x_i - x_j as a Dx. Over a list this is an `omp simd` reduction: the
-    // compiler gives each vector lane every W-th pair and adds the lanes at the end, so the
-    // pair arithmetic runs W pairs per instruction. A pair function for it is written in
-    // plain components (no Eigen vectors, whose 2-D operations are SSE intrinsics the
-    // vectoriser cannot widen) and without branches (selects instead). The order of the
-    // additions depends on W (a build setting) and on the list, which is the same for any
-    // threads, groups and ranks, so results stay bitwise invariant across them (the build
-    // turns off peeling for alignment, see CMakeLists.txt). Off a list, pairs are added in
+    // (N <= 9: the renormalised density gradient's 3-D matrix and vector), with dx = x_i - x_j as a
+    // Dx. Over a list this is an `omp simd` reduction: the compiler gives each vector lane every
+    // W-th pair and adds the lanes at the end, so the pair arithmetic runs W pairs per instruction.
+    // A pair function for it is written in plain components (no Eigen vectors, whose 2-D operations
+    // are SSE intrinsics the vectoriser cannot widen) and without branches (selects instead). The
+    // order of the additions depends on W (a build setting) and on the list, which is the same for
+    // any threads, groups and ranks, so results stay bitwise invariant across them (the build turns
+    // off peeling for alignment, see CMakeLists.txt). Off a list, pairs are added in
     // for_each_neighbour's order.
     template <std::size_t N, class G, class F>
     [[nodiscard]] std::array<Real, N> lane_sum_over_pairs(const AdjacentCells<D>& adj,
@@ -344,14 +345,42 @@ public:
                     r2s[n] = r2;
                     n += r2 < support2 ? 1 : 0;
                 }
-            else
-                for (std::uint32_t p = b; p < e; ++p) {
+            else {
+                std::uint32_t p = b;
+#if defined(__AVX2__) && !defined(SLUICE_SINGLE_PRECISION)
+                // In 2-D, four candidates per instruction, kept by a compressing store (the
+                // same pairs, in the same order, with the same r2 as the loop below). It
+                // writes four entries at n <= p, so within the first p + 4 <= e <= bound.
+                if constexpr (D == 2) {
+                    const Real* X = x.data()->data();
+                    const Real4 xi0 = Real4{0, 0, 0, 0} + xi[0], xi1 = Real4{0, 0, 0, 0} + xi[1];
+                    const Real4 limit = Real4{0, 0, 0, 0} + support2;
+                    for (; p + 4 <= e; p += 4) {
+                        const std::uint32_t* j = wide.j.data() + p;
+                        Real4 xj0, xj1;
+                        load_pair_lanes(X + 2 * j[0], X + 2 * j[1], X + 2 * j[2], X + 2 * j[3], xj0,
+                                        xj1);
+                        const Real4 d0 = xi0 - xj0, d1 = xi1 - xj1;
+                        Real4 sq0 = d0 * d0, sq1 = d1 * d1;
+                        // Rounded products, as squaredNorm's: no fused multiply-add, so that r2
+                        // is a fresh search's bit for bit (test_verlet_list).
+                        asm("" : "+x"(sq0), "+x"(sq1));
+                        const Real4 r2 = sq0 + sq1;
+                        const int keep = _mm256_movemask_pd(__m256d(r2 < limit));
+                        n += static_cast<std::size_t>(compress_store(
+                            keep, _mm_loadu_si128(reinterpret_cast<const __m128i*>(j)), r2, js + n,
+                            r2s + n));
+                    }
+                }
+#endif
+                for (; p < e; ++p) {
                     const std::uint32_t j = wide.j[p];
                     const Real r2 = (xi - x[j]).squaredNorm();
                     js[n] = j;
                     r2s[n] = r2;
                     n += r2 < support2 ? 1 : 0;
                 }
+            }
             out.offset[k + 1] = static_cast<std::uint32_t>(n);
         }
         out.pairs = n;
