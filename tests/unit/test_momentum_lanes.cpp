@@ -4,15 +4,13 @@
 // switch (laminar and artificial viscosity on or off, on wall pairs or not, a periodic axis).
 // And the lanes' sums depend only on the list: the same for any cell order of the calls.
 #include "sluice/core/lanes.hpp"
-#include "sluice/core/neighbourhood.hpp"
-#include "sluice/core/rebin.hpp"
-#include "sluice/physics/kernels.hpp"
 #include "sluice/physics/momentum_lanes.hpp"
+
+#include "lane_block.hpp"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <random>
 #include <span>
 #include <vector>
 
@@ -22,55 +20,11 @@ using namespace sluice;
 
 namespace {
 
-constexpr double dx = 0.01;
+using test::dx;
 
-// 30 x 12 jittered fluid particles with random velocity, density and pressure (some below the
-// background pressure) over three rows of wall particles with a boundary velocity.
-struct Block {
-    Particles<2> P;
-    CellGrid<2> grid;
-    CellRanges ranges;
-    std::vector<CellOccupancy> occ;
-    std::vector<CellIndex> cells;
-    WendlandC2Kernel<2> kernel{1.5 * dx};
-    NeighbourList<2> list;
-
-    Block(bool periodic, unsigned seed) {
-        std::mt19937 rng(seed);
-        std::uniform_real_distribution<double> jitter(-0.25, 0.25), unit(-1, 1);
-        const int nx = 30, ny = 12;
-        ParticleId id = 0;
-        for (int row = 0; row < ny; ++row)
-            for (int i = 0; i < nx; ++i) {
-                const Vec<2> x((i + 0.5 + jitter(rng)) * dx, (row + 0.5 + jitter(rng)) * dx);
-                const double rho = 1000 * (1 + 0.01 * unit(rng));
-                P.push_back(id++, Kind::fluid, x, Vec<2>(unit(rng), unit(rng)), rho,
-                            1000 * dx * dx * (1 + 0.05 * unit(rng)));
-            }
-        for (int row = 1; row <= 3; ++row)
-            for (int i = 0; i < nx; ++i) {
-                P.push_back(id++, Kind::wall, Vec<2>((i + 0.5) * dx, (0.5 - row) * dx),
-                            Vec<2>::Zero(), 1000 * (1 + 0.01 * unit(rng)), 1000 * dx * dx);
-                P.v_bc.back() = Vec<2>(unit(rng), unit(rng));
-            }
-        for (std::size_t i = 0; i < P.size(); ++i) {
-            P.p[i] = 2000 * unit(rng);
-            P.p_over_rho2[i] = P.p[i] / (P.rho[i] * P.rho[i]);
-            P.volume[i] = P.mass[i] / P.rho[i];
-        }
-        grid = CellGrid<2>::make(Vec<2>(0, -0.04), Vec<2>(nx * dx, ny * dx + 0.02),
-                                 kernel.support(), {periodic, false});
-        rebin(grid, P, ranges, occ);
-        for (const auto& c : occ)
-            cells.push_back(c.cell);
-        const auto factor = [this](Real r2) { return grad_factor(kernel, r2); };
-        neighbourhood().build_list(
-            cells, list, factor, [this](std::uint32_t i) { return P.kind[i] == Kind::wall; },
-            [this](std::uint32_t j) { return P.kind[j] == Kind::fluid; });
-    }
-    Neighbourhood<2> neighbourhood() const {
-        return {&grid, &ranges, std::span<const Vec<2>>(P.x), kernel.support()};
-    }
+// The shared block (lane_block.hpp) with this test's two ways of computing on it.
+struct Block : test::LaneBlock {
+    using LaneBlock::LaneBlock;
     std::vector<Vec<2>> scalar(const MomentumParams<2>& prm) const {
         Neighbourhood<2> nb = neighbourhood();
         nb.list = &list;
