@@ -60,8 +60,6 @@ inline Real sum_lanes(const Real4& v) {
 }
 
 #if defined(__AVX2__)
-inline constexpr bool compress_available = true;
-
 namespace detail {
 // For each 4-bit lane mask: the indices that move the masked lanes, in order, to the front;
 // the lanes after them take lane 0 (their values are written past the end and overwritten).
@@ -117,12 +115,9 @@ inline int compress_store(int mask, __m128i ids, Real4 values, std::uint32_t* id
                                      _mm256_castpd_si256(__m256d(values)), half_order)));
     return __builtin_popcount(static_cast<unsigned>(mask));
 }
-#else
-inline constexpr bool compress_available = false;
 #endif
 #else
 inline constexpr bool lanes_available = false;
-inline constexpr bool compress_available = false;
 #endif
 
 } // namespace sluice
