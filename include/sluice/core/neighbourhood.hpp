@@ -409,4 +409,53 @@ public:
     }
 };
 
+#if defined(__AVX__) && !defined(SLUICE_SINGLE_PRECISION)
+// The pairs of particle i's row of a 2-D list, four at a time, for the four-lane pair loops
+// (physics/momentum_lanes.hpp, continuity_lanes.hpp): f(n, factor, xi, yi) with n the four
+// neighbour indices, factor their listed factors and xi, yi particle i's position x_i plus each
+// pair's periodic shift. Pair b + 4k + l of the row goes to lane l. A row's full groups of four
+// load their indices and factors directly; past the row's end a lane takes particle i itself
+// with a zero factor and no shift (its zero displacement and factor add nothing).
+template <class F>
+SLUICE_FLATTEN void for_pairs_in_fours(const NeighbourList<2>& list, std::uint32_t i,
+                                       const Vec<2>& x_i, F&& f) {
+    const std::uint32_t* js = list.j.data();
+    const Real* factors = list.factor.data();
+    const Vec<2>* shift = list.periodic ? list.shift.data() : nullptr;
+    const std::uint32_t row = i - list.first;
+    const std::uint32_t b = list.offset[row], e = list.offset[row + 1];
+    const Real4 zero{0, 0, 0, 0};
+    const Real4 xi_self = zero + x_i[0], yi_self = zero + x_i[1];
+    std::uint32_t q = b;
+    for (; q + 4 <= e; q += 4) {
+        const std::uint32_t n[4] = {js[q], js[q + 1], js[q + 2], js[q + 3]};
+        Real4 xi = xi_self, yi = yi_self;
+        if (shift != nullptr) {
+            Real4 sx, sy;
+            load_pair_lanes(shift[q].data(), shift[q + 1].data(), shift[q + 2].data(),
+                            shift[q + 3].data(), sx, sy);
+            xi += sx;
+            yi += sy;
+        }
+        f(n, Real4(_mm256_loadu_pd(factors + q)), xi, yi);
+    }
+    if (q < e) {
+        std::uint32_t n[4];
+        Real4 factor = zero, xi = xi_self, yi = yi_self;
+        for (std::uint32_t l = 0; l < 4; ++l) {
+            const bool in = q + l < e;
+            n[l] = in ? js[q + l] : i;
+            if (in) {
+                factor[l] = factors[q + l];
+                if (shift != nullptr) {
+                    xi[l] += shift[q + l][0];
+                    yi[l] += shift[q + l][1];
+                }
+            }
+        }
+        f(n, factor, xi, yi);
+    }
+}
+#endif
+
 } // namespace sluice

@@ -34,9 +34,6 @@ continuity_lanes_cell(const Neighbourhood<2>& nb, const DensityDiffusionParams<2
     const Real4 zero{0, 0, 0, 0}, minus_two = zero - 2;
     const Real gh_x = diff.hydrostatic_gradient[0], gh_y = diff.hydrostatic_gradient[1];
     const NeighbourList<2>& list = *nb.list;
-    const std::uint32_t* js = list.j.data();
-    const Real* factors = list.factor.data();
-    const Vec<2>* shift = list.periodic ? list.shift.data() : nullptr;
     // Two values per particle (static_assert'ed by Neighbourhood::lane_sum_over_pairs).
     const Real* v = reinterpret_cast<const Real*>(vel.data());
     const Real* g = reinterpret_cast<const Real*>(P.grad_rho.data());
@@ -47,76 +44,45 @@ continuity_lanes_cell(const Neighbourhood<2>& nb, const DensityDiffusionParams<2
         const Real rho_i = self.rho;
         const Real vx_i = vel[i][0], vy_i = vel[i][1];
         const Real gx_i = antuono ? P.grad_rho[i][0] : 0, gy_i = antuono ? P.grad_rho[i][1] : 0;
-        const std::uint32_t row = i - list.first;
-        const std::uint32_t b = list.offset[row], e = list.offset[row + 1];
         Real4 sum_div = zero, sum_diffusion = zero;
-        // The pair terms of continuity_rate (density.hpp) for the four pairs to neighbours n.
-        const auto four_pairs = [&](const std::uint32_t(&n)[4], Real4 factor, Real4 xi, Real4 yi) {
-            const MomentumNeighbour<2>* r[4] = {records + n[0], records + n[1], records + n[2],
-                                                records + n[3]};
-            Real4 xj, yj, vxj, vyj;
-            load_pair_lanes(r[0]->x.data(), r[1]->x.data(), r[2]->x.data(), r[3]->x.data(), xj, yj);
-            load_pair_lanes(v + 2 * n[0], v + 2 * n[1], v + 2 * n[2], v + 2 * n[3], vxj, vyj);
-            Real4 rho_j = load_lanes(&r[0]->rho), m_j = load_lanes(&r[1]->rho);
-            Real4 unused = load_lanes(&r[2]->rho), wall_j = load_lanes(&r[3]->rho);
-            transpose_lanes(rho_j, m_j, unused, wall_j);
-            const Mask4 wall = wall_j != zero;
-            const Real4 dx = xi - xj, dy = yi - yj;
-            vxj = wall ? zero : vxj; // fixed wall: v_j = 0
-            vyj = wall ? zero : vyj;
-            const Real4 dv_dx = (vx_i - vxj) * dx + (vy_i - vyj) * dy;
-            sum_div += m_j * factor * dv_dx;
-            if constexpr (Diffuse) {
-                const Real4 volume_j{P.volume[n[0]], P.volume[n[1]], P.volume[n[2]],
-                                     P.volume[n[3]]};
-                Real4 diffusion;
-                if constexpr (antuono) {
-                    Real4 gxj, gyj;
-                    load_pair_lanes(g + 2 * n[0], g + 2 * n[1], g + 2 * n[2], g + 2 * n[3], gxj,
-                                    gyj);
-                    const Real4 g_dx = (gx_i + gxj) * dx + (gy_i + gyj) * dy;
-                    diffusion = volume_j * (minus_two * (rho_j - rho_i) * factor - g_dx * factor);
-                }
-                if constexpr (fourtakas) {
-                    const Real4 rho_h = (zero - gh_x * dx) - gh_y * dy; // dx = x_i - x_j
-                    diffusion = volume_j * (minus_two * (rho_j - rho_i - rho_h) * factor);
-                }
-                sum_diffusion += wall ? zero : diffusion; // diffusion over fluid pairs only
-            }
-        };
-        const Real4 xi_self = zero + self.x[0], yi_self = zero + self.x[1];
-        std::uint32_t q = b;
-        for (; q + 4 <= e; q += 4) { // four pairs of the row
-            const std::uint32_t n[4] = {js[q], js[q + 1], js[q + 2], js[q + 3]};
-            Real4 xi = xi_self, yi = yi_self;
-            if (shift != nullptr) {
-                Real4 sx, sy;
-                load_pair_lanes(shift[q].data(), shift[q + 1].data(), shift[q + 2].data(),
-                                shift[q + 3].data(), sx, sy);
-                xi += sx;
-                yi += sy;
-            }
-            four_pairs(n, Real4(_mm256_loadu_pd(factors + q)), xi, yi);
-        }
-        if (q < e) {
-            // The row's last one to three pairs; the other lanes take particle i itself with a
-            // zero factor: every term of such a lane is a multiple of the factor (and of dx,
-            // zero).
-            std::uint32_t n[4];
-            Real4 factor = zero, xi = xi_self, yi = yi_self;
-            for (std::uint32_t l = 0; l < 4; ++l) {
-                const bool in = q + l < e;
-                n[l] = in ? js[q + l] : i;
-                if (in) {
-                    factor[l] = factors[q + l];
-                    if (shift != nullptr) {
-                        xi[l] += shift[q + l][0];
-                        yi[l] += shift[q + l][1];
+        // The pair terms of continuity_rate (density.hpp) for the four pairs to neighbours n
+        // (lanes past the row's end: i itself with a zero factor, so every term is zero).
+        for_pairs_in_fours(
+            list, i, self.x, [&](const std::uint32_t(&n)[4], Real4 factor, Real4 xi, Real4 yi) {
+                const MomentumNeighbour<2>* r[4] = {records + n[0], records + n[1], records + n[2],
+                                                    records + n[3]};
+                Real4 xj, yj, vxj, vyj;
+                load_pair_lanes(r[0]->x.data(), r[1]->x.data(), r[2]->x.data(), r[3]->x.data(), xj,
+                                yj);
+                load_pair_lanes(v + 2 * n[0], v + 2 * n[1], v + 2 * n[2], v + 2 * n[3], vxj, vyj);
+                Real4 rho_j = load_lanes(&r[0]->rho), m_j = load_lanes(&r[1]->rho);
+                Real4 unused = load_lanes(&r[2]->rho), wall_j = load_lanes(&r[3]->rho);
+                transpose_lanes(rho_j, m_j, unused, wall_j);
+                const Mask4 wall = wall_j != zero;
+                const Real4 dx = xi - xj, dy = yi - yj;
+                vxj = wall ? zero : vxj; // fixed wall: v_j = 0
+                vyj = wall ? zero : vyj;
+                const Real4 dv_dx = (vx_i - vxj) * dx + (vy_i - vyj) * dy;
+                sum_div += m_j * factor * dv_dx;
+                if constexpr (Diffuse) {
+                    const Real4 volume_j{P.volume[n[0]], P.volume[n[1]], P.volume[n[2]],
+                                         P.volume[n[3]]};
+                    Real4 diffusion;
+                    if constexpr (antuono) {
+                        Real4 gxj, gyj;
+                        load_pair_lanes(g + 2 * n[0], g + 2 * n[1], g + 2 * n[2], g + 2 * n[3], gxj,
+                                        gyj);
+                        const Real4 g_dx = (gx_i + gxj) * dx + (gy_i + gyj) * dy;
+                        diffusion =
+                            volume_j * (minus_two * (rho_j - rho_i) * factor - g_dx * factor);
                     }
+                    if constexpr (fourtakas) {
+                        const Real4 rho_h = (zero - gh_x * dx) - gh_y * dy; // dx = x_i - x_j
+                        diffusion = volume_j * (minus_two * (rho_j - rho_i - rho_h) * factor);
+                    }
+                    sum_diffusion += wall ? zero : diffusion; // diffusion over fluid pairs only
                 }
-            }
-            four_pairs(n, factor, xi, yi);
-        }
+            });
         drho_out[i] = sum_lanes(sum_div) + diff.delta_h_c0 * sum_lanes(sum_diffusion);
     }
 }

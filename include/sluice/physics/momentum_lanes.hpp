@@ -36,9 +36,6 @@ acceleration_lanes_cell(const Neighbourhood<2>& nb, const MomentumParams<2>& prm
     const Mask4 artificial_on_walls = prm.wall_artificial ? all : none;
     const Real4 zero{0, 0, 0, 0};
     const NeighbourList<2>& list = *nb.list;
-    const std::uint32_t* js = list.j.data();
-    const Real* factors = list.factor.data();
-    const Vec<2>* shift = list.periodic ? list.shift.data() : nullptr;
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
@@ -47,76 +44,42 @@ acceleration_lanes_cell(const Neighbourhood<2>& nb, const MomentumParams<2>& prm
         const Real4 p_over_rho2_i = zero + self.p_over_rho2;
         // A fluid-wall pair acts with the fluid pressure clipped at the background pressure.
         const Real4 p_clipped_over_rho2_i = zero + std::max(P.p[i], prm.p_floor) / (rho_i * rho_i);
-        const std::uint32_t row = i - list.first;
-        const std::uint32_t b = list.offset[row], e = list.offset[row + 1];
         Real4 sum_x = zero, sum_y = zero;
-        // The pair terms of acceleration_cell (momentum.hpp) for the four pairs to the
-        // neighbours whose records are n.
-        const auto four_pairs = [&](const MomentumNeighbour<2>* const(&n)[4], Real4 factor,
-                                    Real4 xi, Real4 yi) {
-            Real4 xj = load_lanes(n[0]->x.data()), yj = load_lanes(n[1]->x.data());
-            Real4 vxj = load_lanes(n[2]->x.data()), vyj = load_lanes(n[3]->x.data());
-            transpose_lanes(xj, yj, vxj, vyj);
-            Real4 rho_j = load_lanes(&n[0]->rho), m_j = load_lanes(&n[1]->rho);
-            Real4 p_over_rho2_j = load_lanes(&n[2]->rho), wall_j = load_lanes(&n[3]->rho);
-            transpose_lanes(rho_j, m_j, p_over_rho2_j, wall_j);
-            const Real4 dx = xi - xj, dy = yi - yj;
-            const Real4 r2 = dx * dx + dy * dy;
-            const Mask4 wall = wall_j != zero;
-            const Real4 vx = self.v[0] - vxj, vy = self.v[1] - vyj; // v_ij (v_bc for a wall)
-            Real4 s = (wall ? p_clipped_over_rho2_i : p_over_rho2_i) + p_over_rho2_j;
-            Real4 pair_x = zero, pair_y = zero;
-            if constexpr (Viscous) {
-                const Real4 k = laminar_viscosity(m_j, two_mu, rho_i, rho_j, factor, r2, eta2);
-                const Mask4 laminar = (~wall) | viscous_on_walls;
-                pair_x = laminar ? k * vx : zero;
-                pair_y = laminar ? k * vy : zero;
-            }
-            if constexpr (Artificial) {
-                const Real4 vr_raw = vx * dx + vy * dy;
-                const Real4 vr = vr_raw < zero ? vr_raw : zero;
-                const Real4 pi = artificial_viscosity(av, vr, r2, eta2, rho_i, rho_j);
-                s -= ((~wall) | artificial_on_walls) ? pi : zero;
-            }
-            const Real4 coefficient = m_j * s;
-            const Mask4 live = r2 > zero;
-            sum_x += live ? pair_x - coefficient * (factor * dx) : zero;
-            sum_y += live ? pair_y - coefficient * (factor * dy) : zero;
-        };
-        const Real4 xi_self = zero + self.x[0], yi_self = zero + self.x[1];
-        std::uint32_t q = b;
-        for (; q + 4 <= e; q += 4) { // four pairs of the row
-            const MomentumNeighbour<2>* const n[4] = {records + js[q], records + js[q + 1],
-                                                      records + js[q + 2], records + js[q + 3]};
-            Real4 xi = xi_self, yi = yi_self;
-            if (shift != nullptr) {
-                Real4 sx, sy;
-                load_pair_lanes(shift[q].data(), shift[q + 1].data(), shift[q + 2].data(),
-                                shift[q + 3].data(), sx, sy);
-                xi += sx;
-                yi += sy;
-            }
-            four_pairs(n, Real4(_mm256_loadu_pd(factors + q)), xi, yi);
-        }
-        if (q < e) {
-            // The row's last one to three pairs; the other lanes take particle i itself with a
-            // zero factor: its zero displacement drops it below (`live`), as it drops the self
-            // pair.
-            const MomentumNeighbour<2>* n[4];
-            Real4 factor = zero, xi = xi_self, yi = yi_self;
-            for (std::uint32_t l = 0; l < 4; ++l) {
-                const bool in = q + l < e;
-                n[l] = records + (in ? js[q + l] : i);
-                if (in) {
-                    factor[l] = factors[q + l];
-                    if (shift != nullptr) {
-                        xi[l] += shift[q + l][0];
-                        yi[l] += shift[q + l][1];
-                    }
+        // The pair terms of acceleration_cell (momentum.hpp) for the four pairs to neighbours
+        // js (lanes past the row's end: i itself with a zero factor, dropped by `live`).
+        for_pairs_in_fours(
+            list, i, self.x, [&](const std::uint32_t(&js)[4], Real4 factor, Real4 xi, Real4 yi) {
+                const MomentumNeighbour<2>* const n[4] = {records + js[0], records + js[1],
+                                                          records + js[2], records + js[3]};
+                Real4 xj = load_lanes(n[0]->x.data()), yj = load_lanes(n[1]->x.data());
+                Real4 vxj = load_lanes(n[2]->x.data()), vyj = load_lanes(n[3]->x.data());
+                transpose_lanes(xj, yj, vxj, vyj);
+                Real4 rho_j = load_lanes(&n[0]->rho), m_j = load_lanes(&n[1]->rho);
+                Real4 p_over_rho2_j = load_lanes(&n[2]->rho), wall_j = load_lanes(&n[3]->rho);
+                transpose_lanes(rho_j, m_j, p_over_rho2_j, wall_j);
+                const Real4 dx = xi - xj, dy = yi - yj;
+                const Real4 r2 = dx * dx + dy * dy;
+                const Mask4 wall = wall_j != zero;
+                const Real4 vx = self.v[0] - vxj, vy = self.v[1] - vyj; // v_ij (v_bc for a wall)
+                Real4 s = (wall ? p_clipped_over_rho2_i : p_over_rho2_i) + p_over_rho2_j;
+                Real4 pair_x = zero, pair_y = zero;
+                if constexpr (Viscous) {
+                    const Real4 k = laminar_viscosity(m_j, two_mu, rho_i, rho_j, factor, r2, eta2);
+                    const Mask4 laminar = (~wall) | viscous_on_walls;
+                    pair_x = laminar ? k * vx : zero;
+                    pair_y = laminar ? k * vy : zero;
                 }
-            }
-            four_pairs(n, factor, xi, yi);
-        }
+                if constexpr (Artificial) {
+                    const Real4 vr_raw = vx * dx + vy * dy;
+                    const Real4 vr = vr_raw < zero ? vr_raw : zero;
+                    const Real4 pi = artificial_viscosity(av, vr, r2, eta2, rho_i, rho_j);
+                    s -= ((~wall) | artificial_on_walls) ? pi : zero;
+                }
+                const Real4 coefficient = m_j * s;
+                const Mask4 live = r2 > zero;
+                sum_x += live ? pair_x - coefficient * (factor * dx) : zero;
+                sum_y += live ? pair_y - coefficient * (factor * dy) : zero;
+            });
         a_out[i] = Vec<2>(sum_lanes(sum_x), sum_lanes(sum_y)) + prm.gravity;
     }
 }
