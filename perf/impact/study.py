@@ -100,9 +100,12 @@ def plan_runs(a, case: dict) -> list[dict]:
     sc = analyse._case_scales(case)
     sqrt_gH = math.sqrt(sc.g * sc.H)
     x_wall = float(case.get("walls", {}).get("tank_hi", case["domain"]["hi"])[0])
+    keeps_force = sr.projection_keeps_force_probes(a.sluice)
     def pressure_probes(projection: bool) -> list[tuple[int, dict]]:
-        # indices as the run's case has them (a projection run's case has no force probes)
-        kept = [p for p in case["probes"] if not (projection and sr.is_force_probe(p))]
+        # indices as the run's case has them (sr.projection_case: an older binary's projection
+        # run has no force probes)
+        kept = [p for p in case["probes"]
+                if not (projection and not keeps_force and sr.is_force_probe(p))]
         return [(i, p) for i, p in enumerate(kept) if p["type"] == "pressure"]
 
     num = case["numerics"]

@@ -123,19 +123,24 @@ def run_sluice(sluice: Path, case: Path, out_dir: Path, threads: int,
 
 def projection_case(sluice: Path, case_file: Path, out_dir: Path) -> Path:
     """The case without what the projection scheme refuses, for a projection variant: the keys
-    `sluice schema` marks as WCSPH's (e.g. numerics.delta_sph) and the force probes (they sum
-    WCSPH pair forces; `is_force_probe`). The case itself when the binary has no `schema`
-    command. Probe indices of the other probes are kept only if the force probes come last."""
+    `sluice schema` marks as WCSPH's (e.g. numerics.delta_sph), a force probe's explicit
+    `reading = "force"` (that scheme integrates the interpolated pressure instead), and, with a
+    binary older than force probes under the projection scheme, the force probes themselves
+    (`is_force_probe`, `force_probes_under_projection`). The case itself when the binary has no
+    `schema` command. Probe indices of the other probes are kept only if dropped force probes
+    come last."""
     r = subprocess.run([str(sluice), "schema"], capture_output=True, text=True)
     if r.returncode != 0:
         return case_file
-    drop = {(k["table"], k["key"]) for k in json.loads(r.stdout) if k["applies"] == "wcsph"}
+    schema = json.loads(r.stdout)
+    drop = {(k["table"], k["key"]) for k in schema if k["applies"] == "wcsph"}
+    keep_force = force_probes_under_projection(schema)
     table, kept, probe = "", [], None
     for line in case_file.read_text().splitlines(keepends=True) + ["[end]\n"]:
         s = line.strip()
         if s.startswith("["):
-            if probe is not None and not any(re.match(r'type\s*=\s*"force"', x.strip())
-                                             for x in probe):
+            if probe is not None and (keep_force or not any(
+                    re.match(r'type\s*=\s*"force"', x.strip()) for x in probe)):
                 kept += probe
             probe = [] if s.startswith("[[probes]]") else None
             table = s.split("#")[0].strip().strip("[]").strip()
@@ -143,14 +148,34 @@ def projection_case(sluice: Path, case_file: Path, out_dir: Path) -> Path:
                 break
         elif "=" in s and not s.startswith("#") and (table, s.split("=")[0].strip()) in drop:
             continue
+        elif probe is not None and re.match(r'reading\s*=\s*"force"', s):
+            continue  # the scheme's default reading ("interpolated") instead
         (kept if probe is None else probe).append(line)
     out = out_dir / f"{case_file.stem}_projection.toml"
     out.write_text("".join(kept))
     return out
 
 
+def force_probes_under_projection(schema: list[dict]) -> bool:
+    """Whether the binary whose `sluice schema` this is reads force probes under the projection
+    scheme (the interpolated pressure integrated over the wall, since session 37)."""
+    return any(k["table"] == "probes" and k["key"] == "reading" and 'type = "force"' in k.get("when", "")
+               for k in schema)
+
+
+def projection_keeps_force_probes(sluice: Path) -> bool:
+    """force_probes_under_projection for a binary (False when it has no `schema` command or is
+    not built yet)."""
+    try:
+        r = subprocess.run([str(sluice), "schema"], capture_output=True, text=True)
+    except OSError:
+        return False
+    return r.returncode == 0 and force_probes_under_projection(json.loads(r.stdout))
+
+
 def is_force_probe(probe: dict) -> bool:
-    """A probe the projection scheme refuses (see projection_case)."""
+    """A probe that binaries older than force_probes_under_projection refuse under the
+    projection scheme (see projection_case)."""
     return probe.get("type") == "force"
 
 

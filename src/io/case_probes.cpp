@@ -80,9 +80,15 @@ void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
                         "missing required key: a force probe needs face (a tank face, \"x+\") "
                         "or box (a walls.boxes index)");
     p.wall = *w;
-    s.require(c.scheme == Scheme::wcsph, "type",
-              "force probes sum the pair forces of the WCSPH momentum equation; the projection "
-              "scheme has none");
+    // The force reading sums the WCSPH momentum equation's fluid-wall pair forces; the
+    // projection scheme applies no such forces, so it integrates the interpolated pressure.
+    const bool wcsph = c.scheme == Scheme::wcsph;
+    p.reading = s.choice("reading", wcsph ? SensorReading::force : SensorReading::interpolated,
+                         kSensorReadings);
+    s.require(wcsph || p.reading != SensorReading::force, "reading",
+              "the force reading sums the pair forces of the WCSPH momentum equation; the "
+              "projection scheme has none (use \"interpolated\": the pressure integrated over "
+              "the wall's surface)");
     p.lo = s.triple("lo");
     p.hi = s.triple("hi");
     p.moment_about = s.triple("moment_about");
@@ -218,7 +224,7 @@ void read_probes(const Section& root, CaseConfig& c) {
         only_for("x", p.type == ProbeType::water_level);
         only_for("y", p.type == ProbeType::water_level);
         only_for("diameter", pressure);
-        only_for("reading", pressure);
+        only_for("reading", pressure || force);
         only_for("face", pressure || force);
         only_for("box", pressure || force);
         only_for("lo", force);

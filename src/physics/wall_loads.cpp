@@ -15,21 +15,22 @@
 namespace sluice {
 namespace {
 
-// Fluid particles bucketed by cells of edge `size` (ascending index within a cell).
+// Particles bucketed by cells of edge `size` (ascending index within a cell): the fluid alone,
+// or every kind (the interpolated readings sum over wall particles too).
 template <int D>
-struct FluidCells {
+struct ParticleCells {
     Real inv;
     std::unordered_map<CellKey<D>, std::vector<std::size_t>, CellKeyHash<D>> cells;
     std::vector<CellKey<D>> offsets = cell_neighbour_offsets<D>();
 
-    FluidCells(const Particles<D>& P, Real size) : inv(1 / size) {
+    ParticleCells(const Particles<D>& P, Real size, bool fluid_only) : inv(1 / size) {
         for (std::size_t i = 0; i < P.size(); ++i) {
             CellKey<D> k;
-            if (P.kind[i] == Kind::fluid && cell_key_of<D>(P.x[i], inv, k))
+            if ((!fluid_only || P.kind[i] == Kind::fluid) && cell_key_of<D>(P.x[i], inv, k))
                 cells[k].push_back(i);
         }
     }
-    // Calls f(i) for every fluid particle of the 3^D cells around x, in a fixed order.
+    // Calls f(i) for every particle of the 3^D cells around x, in a fixed order.
     template <class F>
     void around(const Vec<D>& x, F&& f) const {
         CellKey<D> k;
@@ -48,6 +49,11 @@ struct FluidCells {
     }
 };
 
+template <int D>
+ParticleCells<D> fluid_cells(const Particles<D>& P, Real size) {
+    return ParticleCells<D>(P, size, true);
+}
+
 // Calls on_force(j, F_j, pairs_j) for every wall particle j of `walls`, in order, with the
 // force the fluid exerts on it (double) and the number of fluid particles that contributed.
 template <int D, class K, class OnForce>
@@ -55,7 +61,7 @@ void for_each_wall_force(const Particles<D>& P, const K& kernel, const WallLoadP
                          const std::vector<std::size_t>& walls, OnForce&& on_force) {
     const Real support = kernel.support();
     const Real support2 = support * support;
-    const FluidCells<D> fluid(P, support);
+    const ParticleCells<D> fluid = fluid_cells(P, support);
     const Real eta2 = Real(0.01) * prm.h * prm.h;
     const Real two_mu = 2 * prm.mu;
     const Real av = prm.alpha * prm.h * prm.c0;
@@ -113,25 +119,31 @@ void for_each_wall_force(const Particles<D>& P, const K& kernel, const WallLoadP
     }
 }
 
+// Adds force f at offset r from the moment point to a load (2-D: the moment's z component).
+template <int D>
+void add_load(WallLoad& out, const Eigen::Matrix<double, D, 1>& r,
+              const Eigen::Matrix<double, D, 1>& f) {
+    for (int a = 0; a < D; ++a)
+        out.force[static_cast<std::size_t>(a)] += f[a];
+    if constexpr (D == 2) {
+        out.moment[2] += r[0] * f[1] - r[1] * f[0];
+    } else {
+        out.moment[0] += r[1] * f[2] - r[2] * f[1];
+        out.moment[1] += r[2] * f[0] - r[0] * f[2];
+        out.moment[2] += r[0] * f[1] - r[1] * f[0];
+    }
+}
+
 template <int D, class K>
 WallLoad load_with(const Particles<D>& P, const K& kernel, const WallLoadParams<D>& prm,
                    const std::vector<std::size_t>& walls, const Vec<D>& c) {
     WallLoad out;
     out.wall_particles = walls.size();
-    for_each_wall_force(
-        P, kernel, prm, walls, [&](std::size_t j, const auto& f, std::size_t pairs) {
-            out.pairs += pairs;
-            const Eigen::Matrix<double, D, 1> r = (P.x[j] - c).template cast<double>();
-            for (int a = 0; a < D; ++a)
-                out.force[static_cast<std::size_t>(a)] += f[a];
-            if constexpr (D == 2) {
-                out.moment[2] += r[0] * f[1] - r[1] * f[0];
-            } else {
-                out.moment[0] += r[1] * f[2] - r[2] * f[1];
-                out.moment[1] += r[2] * f[0] - r[0] * f[2];
-                out.moment[2] += r[0] * f[1] - r[1] * f[0];
-            }
-        });
+    for_each_wall_force(P, kernel, prm, walls,
+                        [&](std::size_t j, const auto& f, std::size_t pairs) {
+                            out.pairs += pairs;
+                            add_load<D>(out, (P.x[j] - c).template cast<double>(), f);
+                        });
     return out;
 }
 
@@ -174,10 +186,31 @@ std::vector<Vec<D>> face_samples(const SensorFace<D>& face, Real spacing) {
     return out;
 }
 
+// The Shepard interpolation of the pressure at y, sum_j p_j W_j V_j / sum_j W_j V_j with each
+// p_j clipped below at p_min, over the candidates `each` offers (each(f) calls f(j) in a fixed
+// order); `wet`: whether a fluid particle is within the support. Zero weight (nothing within
+// the support) reads 0.
+template <int D, class K, class Candidates>
+Real shepard_pressure(const Particles<D>& P, const K& kernel, const Vec<D>& y, Real p_min,
+                      Candidates&& each, bool& wet) {
+    const Real support2 = kernel.support() * kernel.support();
+    Real num = 0, den = 0;
+    wet = false;
+    each([&](std::size_t j) {
+        const Real r2 = (P.x[j] - y).squaredNorm();
+        if (r2 >= support2)
+            return;
+        const Real wv = kernel.W(std::sqrt(r2)) * P.mass[j] / P.rho[j];
+        num += std::max(P.p[j], p_min) * wv;
+        den += wv;
+        wet = wet || P.kind[j] == Kind::fluid;
+    });
+    return den > 0 ? num / den : Real(0);
+}
+
 template <int D, class K>
 Real sensor_with(const Particles<D>& P, const K& kernel, const SensorFace<D>& face, Real spacing) {
     const Real support = kernel.support();
-    const Real support2 = support * support;
     const Real radius = face.diameter / 2;
     // The particles that can reach any sample point.
     std::vector<std::size_t> near;
@@ -185,28 +218,76 @@ Real sensor_with(const Particles<D>& P, const K& kernel, const SensorFace<D>& fa
     for (std::size_t j = 0; j < P.size(); ++j)
         if ((P.x[j] - face.centre).squaredNorm() < reach2)
             near.push_back(j);
+    const auto each_near = [&](auto&& f) {
+        for (std::size_t j : near)
+            f(j);
+    };
     double sum = 0;
     int points = 0, wet = 0;
     for (const Vec<D>& y : face_samples(face, spacing)) {
-        Real num = 0, den = 0;
         bool fluid = false;
-        for (std::size_t j : near) {
-            const Real r2 = (P.x[j] - y).squaredNorm();
-            if (r2 >= support2)
-                continue;
-            const Real wv = kernel.W(std::sqrt(r2)) * P.mass[j] / P.rho[j];
-            num += P.p[j] * wv;
-            den += wv;
-            fluid = fluid || P.kind[j] == Kind::fluid;
-        }
+        sum += double(shepard_pressure(P, kernel, y, -std::numeric_limits<Real>::infinity(),
+                                       each_near, fluid));
         ++points;
-        if (den > 0)
-            sum += double(num / den);
         wet += fluid ? 1 : 0;
     }
     if (wet == 0 || points == 0)
         return std::numeric_limits<Real>::quiet_NaN();
     return Real(sum / points);
+}
+
+// The cell centres of a lattice of spacing <= `spacing` on a patch, and the area (length in 2-D)
+// of each cell; none when the patch is empty along a tangential axis.
+template <int D>
+std::vector<Vec<D>> patch_samples(const WallPatch<D>& patch, Real spacing, double& cell_area) {
+    const std::array<int, 2> tangent = tangent_axes<D>(patch.normal_axis);
+    std::array<int, 2> n{1, 1};
+    std::array<Real, 2> step{0, 0};
+    cell_area = 1;
+    for (std::size_t t = 0; t < static_cast<std::size_t>(D - 1); ++t) {
+        const Real extent = patch.hi[tangent[t]] - patch.lo[tangent[t]];
+        if (!(extent > 0))
+            return {};
+        n[t] = std::max(1, static_cast<int>(std::ceil(extent / spacing - Real(1e-9))));
+        step[t] = extent / Real(n[t]);
+        cell_area *= double(step[t]);
+    }
+    std::vector<Vec<D>> out;
+    out.reserve(static_cast<std::size_t>(n[0]) * static_cast<std::size_t>(n[1]));
+    for (int u = 0; u < n[0]; ++u)
+        for (int w = 0; w < (D == 3 ? n[1] : 1); ++w) {
+            Vec<D> y = patch.lo;
+            y[patch.normal_axis] = patch.at;
+            y[tangent[0]] += (Real(u) + Real(0.5)) * step[0];
+            if constexpr (D == 3)
+                y[tangent[1]] += (Real(w) + Real(0.5)) * step[1];
+            out.push_back(y);
+        }
+    return out;
+}
+
+template <int D, class K>
+WallLoad interpolated_load_with(const Particles<D>& P, const K& kernel,
+                                const std::vector<WallPatch<D>>& patches, Real spacing,
+                                Real p_floor, const Vec<D>& c) {
+    const ParticleCells<D> cells(P, kernel.support(), false);
+    WallLoad out;
+    for (const WallPatch<D>& patch : patches) {
+        double area = 0;
+        for (const Vec<D>& y : patch_samples(patch, spacing, area)) {
+            ++out.wall_particles;
+            bool wet = false;
+            const Real p = shepard_pressure(
+                P, kernel, y, p_floor, [&](auto&& f) { cells.around(y, f); }, wet);
+            if (!wet)
+                continue;
+            ++out.pairs;
+            Eigen::Matrix<double, D, 1> f = Eigen::Matrix<double, D, 1>::Zero();
+            f[patch.normal_axis] = double(patch.into_wall) * (double(p) - double(p_floor)) * area;
+            add_load<D>(out, (y - c).template cast<double>(), f);
+        }
+    }
+    return out;
 }
 
 // Largest tangential offset (max norm) between a point and a wall particle on the surface.
@@ -278,7 +359,7 @@ void refresh_dummy_walls(Particles<D>& P, const AnyKernel<D>& kernel, const Eos&
     std::visit(
         [&](const auto& k) {
             const Real support = k.support();
-            const FluidCells<D> fluid(P, support);
+            const ParticleCells<D> fluid = fluid_cells(P, support);
             for (std::size_t w = 0; w < P.size(); ++w) {
                 if (P.kind[w] != Kind::wall)
                     continue;
@@ -327,6 +408,17 @@ Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
 }
 
 template <int D>
+WallLoad interpolated_wall_load(const Particles<D>& P, const AnyKernel<D>& kernel,
+                                const std::vector<WallPatch<D>>& patches, Real spacing,
+                                Real p_floor, const Vec<D>& moment_point) {
+    return std::visit(
+        [&](const auto& k) {
+            return interpolated_load_with(P, k, patches, spacing, p_floor, moment_point);
+        },
+        kernel);
+}
+
+template <int D>
 Real wall_force_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
                        const WallLoadParams<D>& prm, const SensorFace<D>& face, Real wall_dx) {
     return std::visit([&](const auto& k) { return force_sensor_with(P, k, prm, face, wall_dx); },
@@ -353,5 +445,11 @@ template Real wall_force_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
                                    const WallLoadParams<2>&, const SensorFace<2>&, Real);
 template Real wall_force_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
                                    const WallLoadParams<3>&, const SensorFace<3>&, Real);
+template WallLoad interpolated_wall_load<2>(const Particles<2>&, const AnyKernel<2>&,
+                                            const std::vector<WallPatch<2>>&, Real, Real,
+                                            const Vec<2>&);
+template WallLoad interpolated_wall_load<3>(const Particles<3>&, const AnyKernel<3>&,
+                                            const std::vector<WallPatch<3>>&, Real, Real,
+                                            const Vec<3>&);
 
 } // namespace sluice

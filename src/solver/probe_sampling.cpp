@@ -61,6 +61,55 @@ Box<D> force_box(const CaseConfig& cfg, const ProbeConfig& probe) {
     return box;
 }
 
+// A force probe's wall surfaces for the interpolated reading: the tank face's plane across
+// the tank, or the obstacle box's faces, each cut to the probe's region. A box face that lies
+// on the tank's boundary (an obstacle standing on the floor) has no fluid side and is left out.
+template <int D>
+std::vector<WallPatch<D>> force_patches(const CaseConfig& cfg, const ProbeConfig& probe) {
+    const Box<D> region = force_box<D>(cfg, probe);
+    double size = 0;
+    for (int a = 0; a < D; ++a)
+        size = std::max(size, cfg.domain_hi[a] - cfg.domain_lo[a]);
+    const double eps = 1e-9 * size;
+    std::vector<WallPatch<D>> out;
+    // The patch on plane x[axis] = at, spanning [lo, hi] (tangentially) within the region.
+    const auto add = [&](int axis, double at, int into_wall, const Triple& lo, const Triple& hi) {
+        if (at < double(region.lo[axis]) || at > double(region.hi[axis]))
+            return;
+        WallPatch<D> patch;
+        patch.normal_axis = axis;
+        patch.into_wall = into_wall;
+        patch.at = Real(at);
+        for (int a = 0; a < D; ++a) {
+            const auto k = static_cast<std::size_t>(a);
+            patch.lo[a] = std::max(Real(lo[k]), region.lo[a]);
+            patch.hi[a] = std::min(Real(hi[k]), region.hi[a]);
+        }
+        out.push_back(patch);
+    };
+    if (probe.wall.box < 0) {
+        const auto k = static_cast<std::size_t>(probe.wall.face_axis);
+        add(probe.wall.face_axis, probe.wall.face_high ? cfg.tank_hi[k] : cfg.tank_lo[k],
+            probe.wall.face_high ? 1 : -1, cfg.tank_lo, cfg.tank_hi);
+        return out;
+    }
+    const WallBox& b = cfg.boxes[static_cast<std::size_t>(probe.wall.box)];
+    Triple lo = b.lo, hi = b.hi; // the part of the box inside the tank
+    for (std::size_t k = 0; k < static_cast<std::size_t>(D); ++k) {
+        lo[k] = std::max(lo[k], cfg.tank_lo[k]);
+        hi[k] = std::min(hi[k], cfg.tank_hi[k]);
+    }
+    for (int a = 0; a < D; ++a) {
+        const auto k = static_cast<std::size_t>(a);
+        // An obstacle's wall lies inside its box: its lo face has the wall above it (+1).
+        if (b.lo[k] > cfg.tank_lo[k] + eps && b.lo[k] < cfg.tank_hi[k] - eps)
+            add(a, b.lo[k], 1, lo, hi);
+        if (b.hi[k] > cfg.tank_lo[k] + eps && b.hi[k] < cfg.tank_hi[k] - eps)
+            add(a, b.hi[k], -1, lo, hi);
+    }
+    return out;
+}
+
 // Every particle a probe's value depends on lies in its footprint. The kernel sums of the
 // pressure probes and the wall loads reach one support from the points and wall particles they
 // sum for; before the first step the wall particles they read are refreshed from the fluid
@@ -143,9 +192,16 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         if (probe.moment_about)
             for (int d = 0; d < D; ++d)
                 about[d] = Real((*probe.moment_about)[static_cast<std::size_t>(d)]);
-        const Box<D> region = force_box<D>(cfg, probe);
-        const WallLoad load = wall_load(P, sim.kernel(), wall_load_params(sim),
-                                        wall_particles_in(P, region.lo, region.hi), about);
+        const WallLoadParams<D> prm = wall_load_params(sim);
+        WallLoad load;
+        if (probe.reading == SensorReading::interpolated) {
+            load = interpolated_wall_load(P, sim.kernel(), force_patches<D>(cfg, probe), dx / 2,
+                                          prm.p_floor, about);
+        } else {
+            const Box<D> region = force_box<D>(cfg, probe);
+            load =
+                wall_load(P, sim.kernel(), prm, wall_particles_in(P, region.lo, region.hi), about);
+        }
         std::vector<double> row(load.force.begin(), load.force.begin() + D);
         if (probe.moment_about) {
             if (D == 3)

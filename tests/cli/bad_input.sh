@@ -134,6 +134,12 @@ probe 'type = "pressure"\nposition = [1.5, 0.3]\ndiameter = -0.02' sensor_negati
 expect_refused sensor_negative "probes\[0\].diameter"
 probe 'type = "water_level"\nx = 1.8' gauge_outside_tank
 expect_refused gauge_outside_tank "probes\[0\].x"
+# The projection scheme has no pair forces: a force probe integrates the interpolated pressure
+# there, and asking it for the pair-force reading is refused.
+probe 'type = "force"\nface = "x+"\nreading = "force"' force_reading_projection
+expect_refused force_reading_projection "probes\[0\].reading" --set 'numerics.scheme="projection"'
+probe 'type = "force"\nface = "x+"\nreading = "pressure"' force_reading_unknown
+expect_refused force_reading_unknown "probes\[0\].reading"
 
 # Outputs the run could not write are refused before it starts: exit code 2, a message naming
 # the option and the path, and nothing written (the working folder as it was).

@@ -600,23 +600,30 @@ interval = 0.01
     bad("interval = \"every_step\"", "interval = \"every step\"", "probes[2].interval");
     bad("type = \"force\"", "type = \"water_level\"", "probes[3].face");
     bad("x = 0.5", "x = 0.5\ny = 1", "probes[1].y");
+    // A force probe's reading: the pair forces by default under WCSPH, the interpolated
+    // pressure on request.
+    CHECK(force.reading == SensorReading::force);
+    CHECK(read_case(write_case("force_interpolated",
+                               edit("moment_about = [4, 0]\n",
+                                    "moment_about = [4, 0]\nreading = \"interpolated\"\n", text)))
+              .probes[3]
+              .reading == SensorReading::interpolated);
     // The projection scheme has no pair forces to sum (the case as a projection case: without
-    // fluid.eos, which is WCSPH's).
+    // fluid.eos, which is WCSPH's): its force probes and area sensors interpolate, and asking
+    // either for the force reading is refused.
     const std::string projection =
         edit("eos = \"tait\"\n", "", edit("cfl = 0.2", "cfl = 0.2\nscheme = \"projection\"", text));
-    expect_error(projection, "probes[3].type");
-
-    // Nor for an area sensor's force reading: there an area sensor interpolates by default,
-    // and asking for the force reading is refused.
-    const std::string no_force_probe =
-        edit("type = \"force\"\nface = \"x+\"\nlo = [0, 0.5]\nmoment_about = [4, 0]\n",
-             "type = \"surge_front\"\n", projection);
-    const CaseConfig proj = read_case(write_case("instruments_projection", no_force_probe));
+    const CaseConfig proj = read_case(write_case("instruments_projection", projection));
     REQUIRE(proj.probes.size() == 6);
+    CHECK(proj.probes[3].reading == SensorReading::interpolated);
     CHECK(proj.probes[4].reading == SensorReading::interpolated);
     CHECK(proj.probes[5].reading == SensorReading::interpolated);
-    CHECK(contains(expect_error(edit("diameter = 0.02", "diameter = 0.02\nreading = \"force\"",
-                                     no_force_probe),
-                                "probes[4].reading"),
+    CHECK(contains(expect_error(edit("moment_about = [4, 0]\n",
+                                     "moment_about = [4, 0]\nreading = \"force\"\n", projection),
+                                "probes[3].reading"),
                    "projection"));
+    CHECK(contains(
+        expect_error(edit("diameter = 0.02", "diameter = 0.02\nreading = \"force\"", projection),
+                     "probes[4].reading"),
+        "projection"));
 }

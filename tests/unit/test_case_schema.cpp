@@ -115,7 +115,9 @@ std::string set_path(const std::string& table, const std::string& key, const std
 // The "KEY = VALUE" condition of a key as a --set override (the first alternative of
 // "a" | "b"); empty when there is none or it is the probe kind (chosen by set_path).
 std::vector<std::string> when_overrides(const std::string& table, const std::string& when) {
-    if (when == "type = \"pressure\", with a diameter") // the base's probe P is 0.01 m off x+
+    // An area sensor's key (the base's probe P is 0.01 m off x+): "type = \"pressure\", with a
+    // diameter", or "type = \"force\" | \"pressure\", with a diameter" for the reading.
+    if (when.ends_with("\"pressure\", with a diameter"))
         return {"probes.0.diameter=0.02"};
     if (when.empty() || when.rfind("type = ", 0) == 0)
         return {};

@@ -1,7 +1,8 @@
 // Area pressure sensors on walls (physics/wall_loads.hpp): the force reading (the fluid's normal
 // force on the wall columns under the face) and the interpolated reading, on hand-built
 // hydrostatic fields in 2-D and 3-D, a lone spray particle, suction, and the identity between a
-// sensor that covers whole columns and the force probe on those columns.
+// sensor that covers whole columns and the force probe on those columns; and the force from the
+// interpolated pressure integrated over wall surfaces (a wall's thrust, a box's buoyancy).
 #include "sluice/physics/wall_loads.hpp"
 
 #include <doctest/doctest.h>
@@ -187,4 +188,107 @@ TEST_CASE("interpolated sensor in 3-D averages over its disc") {
     const Real p = wall_pressure_sensor(
         P, kernel, SensorFace<3>{Vec<3>(Real(0.1), 0, Real(0.15)), 1, -1, Real(0.06)}, dx / 4);
     CHECK(p == doctest::Approx(kRho * kG * (H - Real(0.15))).epsilon(0.003));
+}
+
+TEST_CASE("interpolated force on a hydrostatic wall is rho g H^2 / 2, as the pair forces say") {
+    const HydrostaticCorner t;
+    const Real dx = t.dx, H = t.H;
+    const AnyKernel<2> kernel = make_kernel<2>(KernelType::wendland_c2, Real(1.5) * dx);
+    // The side wall's surface x = 0 (wall at x < 0) from the floor to above the water: the part
+    // above the water's reach is dry and adds nothing.
+    WallPatch<2> side;
+    side.normal_axis = 0;
+    side.into_wall = -1;
+    side.at = 0;
+    side.lo = Vec<2>(0, 0);
+    side.hi = Vec<2>(0, Real(0.6));
+    const WallLoad surface = interpolated_wall_load(t.P, kernel, {side}, dx / 2, 0, Vec<2>(0, 0));
+    const double thrust = double(kRho * kG * H * H / 2); // 1226 N/m
+    INFO("interpolated Fx " << surface.force[0] << " N/m, Fy " << surface.force[1]);
+    CHECK(surface.force[0] == doctest::Approx(-thrust).epsilon(0.01));
+    CHECK(surface.force[1] == 0);
+    CHECK(surface.wall_particles == 120);    // 0.6 m at dx/2
+    CHECK(surface.pairs < 120);              // the top is dry
+    CHECK(surface.pairs > std::size_t(100)); // 0.5 m of water and the kernel's reach
+    // Its moment about the corner, sum y (p dy): rho g H^3 / 6.
+    CHECK(surface.moment[2] == doctest::Approx(double(kRho * kG * H * H * H / 6)).epsilon(0.02));
+    // The same wall read by the momentum equation's pair forces on its particles (x < 0,
+    // y >= 0: the corner block belongs to the floor).
+    const WallLoad pairs =
+        wall_load(t.P, kernel, inviscid<2>(Real(1.5) * dx),
+                  wall_particles_in(t.P, Vec<2>(-1, 0), Vec<2>(0, 1)), Vec<2>(0, 0));
+    INFO("pair-force Fx " << pairs.force[0]);
+    CHECK(surface.force[0] == doctest::Approx(pairs.force[0]).epsilon(0.02));
+
+    // The floor under the 0.3 m of water: the water's weight per metre, pointing down.
+    WallPatch<2> floor;
+    floor.normal_axis = 1;
+    floor.into_wall = -1;
+    floor.at = 0;
+    floor.lo = Vec<2>(0, 0);
+    floor.hi = Vec<2>(Real(0.3), 0);
+    const WallLoad bottom = interpolated_wall_load(t.P, kernel, {floor}, dx / 2, 0, Vec<2>(0, 0));
+    CHECK(bottom.force[0] == 0);
+    CHECK(bottom.force[1] == doctest::Approx(-double(kRho * kG * H) * 0.3).epsilon(0.005));
+    // The load is relative to the background pressure, below which pressures are clipped: a
+    // floor of 1000 Pa takes 1000 Pa off the floor's load, and tension loads no wall.
+    const WallLoad gauged =
+        interpolated_wall_load(t.P, kernel, {floor}, dx / 2, Real(1000), Vec<2>(0, 0));
+    CHECK(gauged.force[1] - bottom.force[1] == doctest::Approx(1000 * 0.3));
+    HydrostaticCorner tension;
+    for (std::size_t i = 0; i < tension.P.size(); ++i)
+        tension.P.p[i] = -2000;
+    const WallLoad pulled =
+        interpolated_wall_load(tension.P, kernel, {side, floor}, dx / 2, 0, Vec<2>(0, 0));
+    CHECK(pulled.force[0] == 0);
+    CHECK(pulled.force[1] == 0);
+    CHECK(pulled.pairs > 0);
+}
+
+TEST_CASE("interpolated force on a submerged box is Archimedes' buoyancy") {
+    // Water 0.4 m deep over [0, 0.4]^3 (dx = 0.02) holding a fixed box [0.12, 0.28]^3 of wall
+    // particles; every particle carries the hydrostatic pressure rho g (H - z), which is what
+    // the Adami extrapolation gives the box's particles.
+    const Real dx = 0.02, H = 0.4, lo = 0.12, hi = 0.28;
+    Particles<3> P;
+    for (int k = 0; k < 20; ++k)
+        for (int j = 0; j < 20; ++j)
+            for (int i = 0; i < 20; ++i) {
+                const Vec<3> x((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx);
+                const bool inside = (x.array() > lo).all() && (x.array() < hi).all();
+                P.push_back(P.size(), inside ? Kind::wall : Kind::fluid, x, Vec<3>::Zero(), kRho,
+                            kRho * dx * dx * dx);
+                P.p.back() = kRho * kG * (H - x[2]);
+            }
+    const AnyKernel<3> kernel = make_kernel<3>(KernelType::wendland_c2, Real(1.5) * dx);
+    std::vector<WallPatch<3>> faces;
+    for (int a = 0; a < 3; ++a)
+        for (int side = 0; side < 2; ++side) {
+            WallPatch<3> f;
+            f.normal_axis = a;
+            f.into_wall = side == 0 ? 1 : -1; // the lo face has the box above it
+            f.at = side == 0 ? lo : hi;
+            f.lo = Vec<3>::Constant(lo);
+            f.hi = Vec<3>::Constant(hi);
+            faces.push_back(f);
+        }
+    const Vec<3> centre = Vec<3>::Constant((lo + hi) / 2);
+    const WallLoad load = interpolated_wall_load(P, kernel, faces, dx / 2, 0, centre);
+    const double weight = double(kRho * kG) * std::pow(double(hi - lo), 3); // 40.2 N
+    INFO("F = (" << load.force[0] << ", " << load.force[1] << ", " << load.force[2] << ") N");
+    CHECK(load.force[2] ==
+          doctest::Approx(weight).epsilon(1e-9)); // exact: a linear field, a symmetric lattice
+    CHECK(std::abs(load.force[0]) < 1e-9 * weight);
+    CHECK(std::abs(load.force[1]) < 1e-9 * weight);
+    CHECK(load.wall_particles == 6 * 16 * 16);
+    CHECK(load.pairs == load.wall_particles);
+    // The pressures are symmetric about the box's vertical axis: no moment about its centre.
+    for (double m : load.moment)
+        CHECK(std::abs(m) < 1e-9 * weight * double(hi - lo));
+    // Leaving out the bottom face leaves the top's push: rho g (H - hi) A downwards.
+    faces.erase(faces.begin() + 4);
+    const WallLoad no_bottom = interpolated_wall_load(P, kernel, faces, dx / 2, 0, centre);
+    CHECK(no_bottom.force[2] ==
+          doctest::Approx(-double(kRho * kG * (H - hi)) * double((hi - lo) * (hi - lo)))
+              .epsilon(0.005));
 }

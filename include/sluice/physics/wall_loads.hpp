@@ -125,6 +125,35 @@ template <int D>
 Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
                           const SensorFace<D>& face, Real spacing);
 
+// A rectangle (3-D) or segment (2-D) of a wall's surface: the plane x[normal_axis] = at, the
+// wall on the side `into_wall` (as SensorFace), spanning [lo, hi] along the other axes (the
+// normal components of lo and hi are not read).
+template <int D>
+struct WallPatch {
+    int normal_axis = 0;
+    int into_wall = 1;
+    Real at = 0;
+    Vec<D> lo = Vec<D>::Zero(), hi = Vec<D>::Zero();
+};
+
+// The load from the fluid's pressure interpolated on wall surfaces, the force reading of a
+// scheme that has no fluid-wall pair forces (the projection scheme) and a cross-check of those
+// forces under WCSPH:
+//   F = sum_s (p(y_s) - p_floor) A_s into_wall e_n,   M = sum_s (y_s - moment_point) x F_s,
+// over the cell centres y_s of a lattice of spacing <= `spacing` on each patch, A_s their cells'
+// area (length in 2-D), p(y) the Shepard interpolation over fluid and wall particles of
+// wall_pressure_sensor with every particle's pressure clipped below at p_floor (the background
+// pressure): a wall pushes and never pulls, as in WCSPH's fluid-wall pairs (momentum.hpp) and
+// the projection scheme's gradient (negative pressures clamped, projection.hpp). Without the
+// clip a spray particle at the wall, whose WCSPH pressure can be -10^5 Pa, would pull on it. A
+// sample point with no fluid particle within the support is dry and adds nothing. Pressure
+// only: the viscous traction, which the force reading includes, is left out. Returned counts:
+// wall_particles = sample points, pairs = wet sample points.
+template <int D>
+WallLoad interpolated_wall_load(const Particles<D>& P, const AnyKernel<D>& kernel,
+                                const std::vector<WallPatch<D>>& patches, Real spacing,
+                                Real p_floor, const Vec<D>& moment_point);
+
 // The Adami state of every dummy wall particle (pressure, density, mass = rho_w wall_volume)
 // from the fluid around it, as the step's walls stage computes it (walls.hpp,
 // dummy_wall_state). The run calls it on its copy of the initial state, whose wall particles
@@ -151,6 +180,12 @@ extern template Real wall_pressure_sensor<2>(const Particles<2>&, const AnyKerne
                                              const SensorFace<2>&, Real);
 extern template Real wall_pressure_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
                                              const SensorFace<3>&, Real);
+extern template WallLoad interpolated_wall_load<2>(const Particles<2>&, const AnyKernel<2>&,
+                                                   const std::vector<WallPatch<2>>&, Real, Real,
+                                                   const Vec<2>&);
+extern template WallLoad interpolated_wall_load<3>(const Particles<3>&, const AnyKernel<3>&,
+                                                   const std::vector<WallPatch<3>>&, Real, Real,
+                                                   const Vec<3>&);
 extern template Real wall_force_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
                                           const WallLoadParams<2>&, const SensorFace<2>&, Real);
 extern template Real wall_force_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
