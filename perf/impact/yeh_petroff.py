@@ -10,7 +10,9 @@ the first-impact peak of the force (raw, and after a centred moving average of `
 default 10 ms: the digitised record has a few points per 10 ms), the mean force over the
 plateau 0.15-0.5 s after the rise, the impulse (the integral of the force, trapezoidal over the
 raw samples) over the first 0.15 s after the rise (the window of the first-impact peak), and the
-RMS difference of the filtered force over 0-0.5 s after the rise. Usage: yeh_petroff.py RUN_DIR [RUN_DIR...] [--png FILE]
+RMS difference of the filtered force over 0-0.5 s after the rise. Usage: yeh_petroff.py
+RUN_DIR[:PROBE] [RUN_DIR[:PROBE]...] [--png FILE]; PROBE (default F_column) names another force
+probe of the run, e.g. one with reading = "interpolated".
 """
 from __future__ import annotations
 
@@ -36,8 +38,14 @@ def load_exp() -> tuple[np.ndarray, np.ndarray]:
     return a[o, 0], a[o, 1]
 
 
-def load_run(run: Path) -> tuple[np.ndarray, np.ndarray]:
-    d = np.genfromtxt(run / "probes" / "F_column.csv", delimiter=",", names=True)
+def split_run(arg: str) -> tuple[Path, str]:
+    """RUN_DIR[:PROBE] -> (run folder, probe name); the probe defaults to F_column."""
+    run, _, probe = arg.partition(":")
+    return Path(run), probe or "F_column"
+
+
+def load_run(run: Path, probe: str = "F_column") -> tuple[np.ndarray, np.ndarray]:
+    d = np.genfromtxt(run / "probes" / f"{probe}.csv", delimiter=",", names=True)
     return d["time_s"], d["Fx_N"]
 
 
@@ -57,7 +65,7 @@ def metrics(t: np.ndarray, f: np.ndarray, rise: float, filter_s: float) -> dict:
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("runs", nargs="+", type=Path)
+    ap.add_argument("runs", nargs="+", help="RUN_DIR[:PROBE]")
     ap.add_argument("--rise", type=float, default=8.0)
     ap.add_argument("--filter-ms", type=float, default=10.0)
     ap.add_argument("--png", type=Path)
@@ -68,8 +76,9 @@ def main() -> int:
     print(f"experiment   rise at t = {e['t_rise']:.3f} s (figure time)  peak {e['peak_raw']:.1f} N "
           f"(filtered {e['peak_filt']:.1f} N)  impulse {e['impulse']:.2f} N s  plateau {e['plateau']:.1f} N")
     curves = [("experiment", e)]
-    for run in a.runs:
-        t, f = load_run(run)
+    for arg in a.runs:
+        run, probe = split_run(arg)
+        t, f = load_run(run, probe)
         m = metrics(t, f, a.rise, fs)
         if math.isnan(m["t_rise"]):
             print(f"{run}: the force never exceeds {a.rise} N")
@@ -78,12 +87,13 @@ def main() -> int:
         lo, hi = 0.0, min(0.5, m["t_end_after_rise"])
         sel = s & (e["tf"] <= hi) & (e["tf"] >= lo)
         rms = float(np.sqrt(np.mean((np.interp(e["tf"][sel], m["tf"], m["ff"]) - e["ff"][sel]) ** 2)))
-        print(f"{str(run):40s} rise at t = {m['t_rise']:.3f} s  peak {m['peak_raw']:.1f} N "
+        name = run.name if probe == "F_column" else f"{run.name}:{probe}"
+        print(f"{name:40s} rise at t = {m['t_rise']:.3f} s  peak {m['peak_raw']:.1f} N "
               f"(filtered {m['peak_filt']:.1f} N, {m['peak_filt'] / e['peak_filt']:.2f} x exp)  "
               f"impulse {m['impulse']:.2f} N s ({m['impulse'] / e['impulse']:.2f} x exp)  "
               f"plateau {m['plateau']:.1f} N ({m['plateau'] / e['plateau']:.2f} x exp)  "
               f"RMS vs exp over {lo:.1f}-{hi:.2f} s after the rise {rms:.1f} N")
-        curves.append((run.name, m))
+        curves.append((name, m))
     if a.png:
         import matplotlib
         matplotlib.use("Agg")
