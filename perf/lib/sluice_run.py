@@ -129,10 +129,9 @@ def projection_case(sluice: Path, case_file: Path, out_dir: Path) -> Path:
     (`is_force_probe`, `force_probes_under_projection`). The case itself when the binary has no
     `schema` command. Probe indices of the other probes are kept only if dropped force probes
     come last."""
-    r = subprocess.run([str(sluice), "schema"], capture_output=True, text=True)
-    if r.returncode != 0:
+    schema = sluice_schema(sluice)
+    if schema is None:
         return case_file
-    schema = json.loads(r.stdout)
     drop = {(k["table"], k["key"]) for k in schema if k["applies"] == "wcsph"}
     keep_force = force_probes_under_projection(schema)
     table, kept, probe = "", [], None
@@ -159,18 +158,24 @@ def projection_case(sluice: Path, case_file: Path, out_dir: Path) -> Path:
 def force_probes_under_projection(schema: list[dict]) -> bool:
     """Whether the binary whose `sluice schema` this is reads force probes under the projection
     scheme (the interpolated pressure integrated over the wall, since session 37)."""
-    return any(k["table"] == "probes" and k["key"] == "reading" and 'type = "force"' in k.get("when", "")
-               for k in schema)
+    return any(k["table"] == "probes" and k["key"] == "reading"
+               and 'type = "force"' in k.get("when", "") for k in schema)
 
 
-def projection_keeps_force_probes(sluice: Path) -> bool:
-    """force_probes_under_projection for a binary (False when it has no `schema` command or is
-    not built yet)."""
+def sluice_schema(sluice: Path) -> list[dict] | None:
+    """The binary's `sluice schema` (its case keys); None when it has no such command or is not
+    built yet."""
     try:
         r = subprocess.run([str(sluice), "schema"], capture_output=True, text=True)
     except OSError:
-        return False
-    return r.returncode == 0 and force_probes_under_projection(json.loads(r.stdout))
+        return None
+    return json.loads(r.stdout) if r.returncode == 0 else None
+
+
+def projection_keeps_force_probes(sluice: Path) -> bool:
+    """force_probes_under_projection for a binary (False without its schema)."""
+    schema = sluice_schema(sluice)
+    return schema is not None and force_probes_under_projection(schema)
 
 
 def is_force_probe(probe: dict) -> bool:

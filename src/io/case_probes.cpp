@@ -11,6 +11,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sluice::case_file {
@@ -24,6 +25,20 @@ const std::vector<std::pair<std::string, ProbeType>> kProbeTypes = {
 
 const std::vector<std::pair<std::string, SensorReading>> kSensorReadings = {
     {"force", SensorReading::force}, {"interpolated", SensorReading::interpolated}};
+
+// An area sensor's or force probe's `reading`. The force reading sums the WCSPH momentum
+// equation's fluid-wall pair forces; the projection scheme applies no such forces, so there the
+// interpolated pressure is the default and the force reading is refused.
+SensorReading read_reading(const Section& s, const CaseConfig& c, std::string_view instead) {
+    const bool wcsph = c.scheme == Scheme::wcsph;
+    const SensorReading r = s.choice(
+        "reading", wcsph ? SensorReading::force : SensorReading::interpolated, kSensorReadings);
+    s.require(wcsph || r != SensorReading::force, "reading",
+              fmt::format("the force reading sums the pair forces of the WCSPH momentum "
+                          "equation; the projection scheme has none (use \"interpolated\"{})",
+                          instead));
+    return r;
+}
 
 bool inside_domain(const CaseConfig& c, const Triple& p) {
     const double eps = slack(c);
@@ -80,15 +95,7 @@ void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
                         "missing required key: a force probe needs face (a tank face, \"x+\") "
                         "or box (a walls.boxes index)");
     p.wall = *w;
-    // The force reading sums the WCSPH momentum equation's fluid-wall pair forces; the
-    // projection scheme applies no such forces, so it integrates the interpolated pressure.
-    const bool wcsph = c.scheme == Scheme::wcsph;
-    p.reading = s.choice("reading", wcsph ? SensorReading::force : SensorReading::interpolated,
-                         kSensorReadings);
-    s.require(wcsph || p.reading != SensorReading::force, "reading",
-              "the force reading sums the pair forces of the WCSPH momentum equation; the "
-              "projection scheme has none (use \"interpolated\": the pressure integrated over "
-              "the wall's surface)");
+    p.reading = read_reading(s, c, ": the pressure integrated over the wall's surface");
     p.lo = s.triple("lo");
     p.hi = s.triple("hi");
     p.moment_about = s.triple("moment_about");
@@ -240,15 +247,7 @@ void read_probes(const Section& root, CaseConfig& c) {
             if (s.node("diameter") != nullptr) {
                 p.diameter = s.required_number("diameter", "sensor diameter [m]");
                 read_sensor_wall(s, c, p);
-                // The force reading sums the WCSPH momentum equation's fluid-wall pair forces;
-                // the projection scheme applies no such forces, so it interpolates.
-                const bool wcsph = c.scheme == Scheme::wcsph;
-                p.reading =
-                    s.choice("reading", wcsph ? SensorReading::force : SensorReading::interpolated,
-                             kSensorReadings);
-                s.require(wcsph || p.reading != SensorReading::force, "reading",
-                          "the force reading sums the pair forces of the WCSPH momentum "
-                          "equation; the projection scheme has none (use \"interpolated\")");
+                p.reading = read_reading(s, c, "");
             } else {
                 s.require(s.node("reading") == nullptr, "reading",
                           "only an area sensor (with a diameter) has a reading; a point probe "

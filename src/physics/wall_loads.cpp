@@ -1,5 +1,6 @@
 // Wall loads and area pressure sensors (wall_loads.hpp): a cell hash of the fluid, then the
-// fluid-wall pair terms of the momentum equation summed per wall particle.
+// fluid-wall pair terms of the momentum equation summed per wall particle; or a cell hash of
+// every particle, then Shepard interpolations of the pressure on the wall's surface.
 #include "sluice/physics/wall_loads.hpp"
 
 #include "sluice/physics/cell_hash.hpp"
@@ -52,6 +53,11 @@ struct ParticleCells {
 template <int D>
 ParticleCells<D> fluid_cells(const Particles<D>& P, Real size) {
     return ParticleCells<D>(P, size, true);
+}
+
+template <int D>
+ParticleCells<D> all_cells(const Particles<D>& P, Real size) {
+    return ParticleCells<D>(P, size, false);
 }
 
 // Calls on_force(j, F_j, pairs_j) for every wall particle j of `walls`, in order, with the
@@ -270,7 +276,7 @@ template <int D, class K>
 WallLoad interpolated_load_with(const Particles<D>& P, const K& kernel,
                                 const std::vector<WallPatch<D>>& patches, Real spacing,
                                 Real p_floor, const Vec<D>& c) {
-    const ParticleCells<D> cells(P, kernel.support(), false);
+    const ParticleCells<D> cells = all_cells(P, kernel.support());
     WallLoad out;
     for (const WallPatch<D>& patch : patches) {
         double area = 0;

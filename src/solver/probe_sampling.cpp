@@ -28,15 +28,22 @@ struct Box {
     [[nodiscard]] Box grown(Real by) const { return {lo.array() - by, hi.array() + by}; }
 };
 
+// A length far below any spacing, for comparing coordinates of the geometry: 1e-9 of the
+// domain's largest extent.
+template <int D>
+double geometry_eps(const CaseConfig& cfg) {
+    double size = 0;
+    for (int a = 0; a < D; ++a)
+        size = std::max(size, cfg.domain_hi[a] - cfg.domain_lo[a]);
+    return 1e-9 * size;
+}
+
 // The region of a force probe: the half-space behind a tank face (its layers and the corners
 // it shares) or an obstacle box, cut to the probe's lo/hi.
 template <int D>
 Box<D> force_box(const CaseConfig& cfg, const ProbeConfig& probe) {
     const double inf = std::numeric_limits<double>::infinity();
-    double size = 0;
-    for (int a = 0; a < D; ++a)
-        size = std::max(size, cfg.domain_hi[a] - cfg.domain_lo[a]);
-    const double eps = 1e-9 * size;
+    const double eps = geometry_eps<D>(cfg);
     Box<D> box;
     for (int a = 0; a < D; ++a) {
         const auto k = static_cast<std::size_t>(a);
@@ -67,10 +74,7 @@ Box<D> force_box(const CaseConfig& cfg, const ProbeConfig& probe) {
 template <int D>
 std::vector<WallPatch<D>> force_patches(const CaseConfig& cfg, const ProbeConfig& probe) {
     const Box<D> region = force_box<D>(cfg, probe);
-    double size = 0;
-    for (int a = 0; a < D; ++a)
-        size = std::max(size, cfg.domain_hi[a] - cfg.domain_lo[a]);
-    const double eps = 1e-9 * size;
+    const double eps = geometry_eps<D>(cfg);
     std::vector<WallPatch<D>> out;
     // The patch on plane x[axis] = at, spanning [lo, hi] (tangentially) within the region.
     const auto add = [&](int axis, double at, int into_wall, const Triple& lo, const Triple& hi) {
