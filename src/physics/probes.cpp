@@ -261,8 +261,8 @@ template Real surge_front<3>(const Particles<3>&, Real);
 template Real surge_front<2>(const Particles<2>&, const std::vector<std::size_t>&, Real);
 template Real surge_front<3>(const Particles<3>&, const std::vector<std::size_t>&, Real);
 template Real pressure_probe<2, AnyKernel<2>>(const Particles<2>&, const AnyKernel<2>&,
-                                              const Vec<2>&);
+                                              const Vec<2>&, Real);
 template Real pressure_probe<3, AnyKernel<3>>(const Particles<3>&, const AnyKernel<3>&,
-                                              const Vec<3>&);
+                                              const Vec<3>&, Real);
 
 } // namespace sluice

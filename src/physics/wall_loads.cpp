@@ -215,7 +215,8 @@ Real shepard_pressure(const Particles<D>& P, const K& kernel, const Vec<D>& y, R
 }
 
 template <int D, class K>
-Real sensor_with(const Particles<D>& P, const K& kernel, const SensorFace<D>& face, Real spacing) {
+Real sensor_with(const Particles<D>& P, const K& kernel, const SensorFace<D>& face, Real spacing,
+                 Real p_min) {
     const Real support = kernel.support();
     const Real radius = face.diameter / 2;
     // The particles that can reach any sample point.
@@ -232,8 +233,7 @@ Real sensor_with(const Particles<D>& P, const K& kernel, const SensorFace<D>& fa
     int points = 0, wet = 0;
     for (const Vec<D>& y : face_samples(face, spacing)) {
         bool fluid = false;
-        sum += double(shepard_pressure(P, kernel, y, -std::numeric_limits<Real>::infinity(),
-                                       each_near, fluid));
+        sum += double(shepard_pressure(P, kernel, y, p_min, each_near, fluid));
         ++points;
         wet += fluid ? 1 : 0;
     }
@@ -409,8 +409,9 @@ WallLoad wall_load(const Particles<D>& P, const AnyKernel<D>& kernel, const Wall
 
 template <int D>
 Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
-                          const SensorFace<D>& face, Real spacing) {
-    return std::visit([&](const auto& k) { return sensor_with(P, k, face, spacing); }, kernel);
+                          const SensorFace<D>& face, Real spacing, Real p_min) {
+    return std::visit([&](const auto& k) { return sensor_with(P, k, face, spacing, p_min); },
+                      kernel);
 }
 
 template <int D>
@@ -422,6 +423,66 @@ WallLoad interpolated_wall_load(const Particles<D>& P, const AnyKernel<D>& kerne
             return interpolated_load_with(P, k, patches, spacing, p_floor, moment_point);
         },
         kernel);
+}
+
+template <int D>
+WallLoad contact_wall_load(std::vector<WallContact<D>> contacts, const Vec<D>& lo, const Vec<D>& hi,
+                           const Vec<D>& moment_point) {
+    const auto inside = [&](const Vec<D>& x) {
+        for (int d = 0; d < D; ++d)
+            if (x[d] < lo[d] || x[d] > hi[d])
+                return false;
+        return true;
+    };
+    std::erase_if(contacts, [&](const WallContact<D>& c) { return !inside(c.wall_x); });
+    // A pair meets once per step, except through two periodic images: the position breaks
+    // that tie.
+    std::sort(contacts.begin(), contacts.end(),
+              [](const WallContact<D>& a, const WallContact<D>& b) {
+                  if (a.fluid != b.fluid)
+                      return a.fluid < b.fluid;
+                  if (a.wall != b.wall)
+                      return a.wall < b.wall;
+                  return std::lexicographical_compare(a.wall_x.data(), a.wall_x.data() + D,
+                                                      b.wall_x.data(), b.wall_x.data() + D);
+              });
+    WallLoad out;
+    for (const WallContact<D>& c : contacts) {
+        add_load<D>(out, (c.wall_x - moment_point).template cast<double>(),
+                    c.force.template cast<double>());
+        ++out.pairs;
+    }
+    return out;
+}
+
+template <int D>
+Real contact_traction(const std::vector<WallContact<D>>& contacts, const SensorFace<D>& face,
+                      Real wall_dx, Real depth, Real spread) {
+    const int axis = face.normal_axis;
+    const std::array<int, 2> tangent = tangent_axes<D>(axis);
+    const Real surface = face.centre[axis];
+    const Real reach = face.diameter / 2 + spread;
+    std::vector<const WallContact<D>*> near;
+    for (const WallContact<D>& c : contacts) {
+        const Real d = Real(face.into_wall) * (c.wall_x[axis] - surface);
+        if (d > 0 && d < depth && tangential_distance<D>(c.wall_x, face.centre, tangent) <= reach)
+            near.push_back(&c);
+    }
+    if (near.empty())
+        return 0;
+    std::sort(near.begin(), near.end(), [](const WallContact<D>* a, const WallContact<D>* b) {
+        return a->fluid != b->fluid ? a->fluid < b->fluid : a->wall < b->wall;
+    });
+    const double area = D == 3 ? 4.0 * double(spread) * double(spread) : 2.0 * double(spread);
+    double sum = 0;
+    std::size_t points = 0;
+    for (const Vec<D>& y : face_samples(face, wall_dx / 8)) {
+        ++points;
+        for (const WallContact<D>* c : near)
+            if (tangential_distance<D>(c->wall_x, y, tangent) < spread)
+                sum += double(face.into_wall) * double(c->force[axis]) / area;
+    }
+    return points > 0 ? Real(sum / double(points)) : Real(0);
 }
 
 template <int D>
@@ -444,9 +505,17 @@ template WallLoad wall_load<2>(const Particles<2>&, const AnyKernel<2>&, const W
 template WallLoad wall_load<3>(const Particles<3>&, const AnyKernel<3>&, const WallLoadParams<3>&,
                                const std::vector<std::size_t>&, const Vec<3>&);
 template Real wall_pressure_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
-                                      const SensorFace<2>&, Real);
+                                      const SensorFace<2>&, Real, Real);
 template Real wall_pressure_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
-                                      const SensorFace<3>&, Real);
+                                      const SensorFace<3>&, Real, Real);
+template WallLoad contact_wall_load<2>(std::vector<WallContact<2>>, const Vec<2>&, const Vec<2>&,
+                                       const Vec<2>&);
+template WallLoad contact_wall_load<3>(std::vector<WallContact<3>>, const Vec<3>&, const Vec<3>&,
+                                       const Vec<3>&);
+template Real contact_traction<2>(const std::vector<WallContact<2>>&, const SensorFace<2>&, Real,
+                                  Real, Real);
+template Real contact_traction<3>(const std::vector<WallContact<3>>&, const SensorFace<3>&, Real,
+                                  Real, Real);
 template Real wall_force_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
                                    const WallLoadParams<2>&, const SensorFace<2>&, Real);
 template Real wall_force_sensor<3>(const Particles<3>&, const AnyKernel<3>&,

@@ -164,26 +164,72 @@ WallLoadParams<D> wall_load_params(const Simulation<D>& sim) {
     return w;
 }
 
+// The lowest pressure the scheme applies to the fluid, below which a pressure probe does not
+// read: the projection scheme with a free surface applies max(p, 0) (projection.hpp, P7: the
+// solve's tension is not applied, so the fluid never feels it and no wall carries it);
+// without a free surface (its level fixed by the solver's gauge) and under WCSPH, whose
+// fluid pairs apply tension, every pressure is read as it is.
+template <int D>
+Real applied_pressure_floor(const Simulation<D>& sim) {
+    if (sim.config().scheme != Scheme::projection)
+        return -std::numeric_limits<Real>::infinity();
+    const PressureSolveRecord* solve = sim.last_pressure_solve();
+    return solve != nullptr && solve->free_level ? -std::numeric_limits<Real>::infinity() : Real(0);
+}
+
+template <int D>
+Real kernel_support(const Simulation<D>& sim) {
+    return std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+}
+
+// An interpolated area sensor's face, and the box holding the wall particles whose contacts
+// it reads (contact_traction: h beyond the face, a support deep).
+template <int D>
+SensorFace<D> sensor_face(const ProbeConfig& probe) {
+    Vec<D> point;
+    for (int d = 0; d < D; ++d)
+        point[d] = Real(probe.position[static_cast<std::size_t>(d)]);
+    point[probe.sensor_axis] = Real(probe.sensor_surface);
+    return {point, probe.sensor_axis, probe.sensor_into_wall, Real(probe.diameter)};
+}
+
+template <int D>
+Box<D> sensor_contact_box(const Simulation<D>& sim, const ProbeConfig& probe) {
+    const SensorFace<D> face = sensor_face<D>(probe);
+    const Real reach = face.diameter / 2 + Real(sim.config().h_over_dx * sim.config().dx);
+    Box<D> box{face.centre.array() - reach, face.centre.array() + reach};
+    const int a = face.normal_axis;
+    const Real far = face.centre[a] + Real(face.into_wall) * kernel_support(sim);
+    box.lo[a] = std::min(face.centre[a], far);
+    box.hi[a] = std::max(face.centre[a], far);
+    return box;
+}
+
 // One row of a probe's CSV (after the time) from the particles of its footprint (a force
 // probe: its components, then its moment); a surge front from its merged columns.
 template <int D>
 std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
+                              const std::vector<WallContact<D>>& contacts,
                               const ProbeConfig& probe) {
     const CaseConfig& cfg = sim.config();
     const Real dx = Real(cfg.dx);
     switch (probe.type) {
     case ProbeType::pressure: {
-        Vec<D> point;
-        for (int d = 0; d < D; ++d)
-            point[d] = Real(probe.position[static_cast<std::size_t>(d)]);
-        if (probe.diameter <= 0)
-            return {double(pressure_probe(P, sim.kernel(), point))};
-        point[probe.sensor_axis] = Real(probe.sensor_surface);
-        const SensorFace<D> face{point, probe.sensor_axis, probe.sensor_into_wall,
-                                 Real(probe.diameter)};
+        const Real p_min = applied_pressure_floor(sim);
+        if (probe.diameter <= 0) {
+            Vec<D> point;
+            for (int d = 0; d < D; ++d)
+                point[d] = Real(probe.position[static_cast<std::size_t>(d)]);
+            return {double(pressure_probe(P, sim.kernel(), point, p_min))};
+        }
+        const SensorFace<D> face = sensor_face<D>(probe);
         if (probe.reading == SensorReading::force)
             return {double(wall_force_sensor(P, sim.kernel(), wall_load_params(sim), face, dx))};
-        return {double(wall_pressure_sensor(P, sim.kernel(), face, dx / 4))};
+        // The pressure on the face, and the traction of the wall collisions under it
+        // (projection; none under WCSPH).
+        const Real pressure = wall_pressure_sensor(P, sim.kernel(), face, dx / 4, p_min);
+        const Real h = Real(cfg.h_over_dx * cfg.dx);
+        return {double(pressure + contact_traction(contacts, face, dx, kernel_support(sim), h))};
     }
     case ProbeType::water_level: {
         std::optional<Real> y;
@@ -199,8 +245,16 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         const WallLoadParams<D> prm = wall_load_params(sim);
         WallLoad load;
         if (probe.reading == SensorReading::interpolated) {
+            // The pressure on the wall's surfaces, and the momentum the scheme's wall
+            // collisions gave the wall particles of the region (projection; none under WCSPH).
             load = interpolated_wall_load(P, sim.kernel(), force_patches<D>(cfg, probe), dx / 2,
                                           prm.p_floor, about);
+            const Box<D> region = force_box<D>(cfg, probe);
+            const WallLoad contact = contact_wall_load(contacts, region.lo, region.hi, about);
+            for (std::size_t a = 0; a < 3; ++a) {
+                load.force[a] += contact.force[a];
+                load.moment[a] += contact.moment[a];
+            }
         } else {
             const Box<D> region = force_box<D>(cfg, probe);
             load =
@@ -244,8 +298,20 @@ std::vector<std::vector<double>> sample_probes(const Simulation<D>& sim,
             boxes.push_back(footprint(sim, probe));
         }
     }
+    // The regions of the due force probes and area sensors that read the interpolated load,
+    // whose wall collisions they add.
+    std::vector<Box<D>> contact_regions;
+    for (std::size_t k : due) {
+        const ProbeConfig& probe = cfg.probes[k];
+        if (probe.reading != SensorReading::interpolated)
+            continue;
+        if (probe.type == ProbeType::force)
+            contact_regions.push_back(force_box<D>(cfg, probe));
+        else if (probe.type == ProbeType::pressure && probe.diameter > 0)
+            contact_regions.push_back(sensor_contact_box(sim, probe));
+    }
     // This rank's message: how many particles, the particles of any footprint (each once, in
-    // this rank's order), then each front's columns.
+    // this rank's order), each front's columns, then the wall collisions in those regions.
     tasks::Bytes mine, picked;
     std::uint64_t count = 0;
     for (std::size_t i = 0; i < sim.owned(); ++i)
@@ -264,12 +330,27 @@ std::vector<std::vector<double>> sample_probes(const Simulation<D>& sim,
             tasks::put(mine, c.furthest);
         }
     }
+    if (!contact_regions.empty()) {
+        std::vector<WallContact<D>> near;
+        for (const WallContact<D>& c : sim.wall_contacts())
+            if (std::any_of(contact_regions.begin(), contact_regions.end(),
+                            [&](const Box<D>& b) { return b.holds(c.wall_x); }))
+                near.push_back(c);
+        tasks::put(mine, static_cast<std::uint64_t>(near.size()));
+        for (const WallContact<D>& c : near) {
+            tasks::put(mine, c.fluid);
+            tasks::put(mine, c.wall);
+            tasks::put(mine, c.wall_x);
+            tasks::put(mine, c.force);
+        }
+    }
     const auto gathered = sim.comm().gather(mine, 0);
     if (sim.comm().rank() != 0)
         return {};
 
     // Ranks own consecutive runs of the curve: rank order is the order of a full gather.
     Particles<D> local;
+    std::vector<WallContact<D>> contacts;
     std::vector<FrontColumns<D>> merged;
     for (std::size_t k : due)
         if (cfg.probes[k].type == ProbeType::surge_front)
@@ -290,6 +371,17 @@ std::vector<std::vector<double>> sample_probes(const Simulation<D>& sim,
                 f.merge(key, col);
             }
         }
+        if (!contact_regions.empty()) {
+            const auto n_contacts = tasks::take<std::uint64_t>(b, pos);
+            for (std::uint64_t c = 0; c < n_contacts; ++c) {
+                WallContact<D> contact;
+                contact.fluid = tasks::take<ParticleId>(b, pos);
+                contact.wall = tasks::take<ParticleId>(b, pos);
+                contact.wall_x = tasks::take<Vec<D>>(b, pos);
+                contact.force = tasks::take<Vec<D>>(b, pos);
+                contacts.push_back(contact);
+            }
+        }
     }
     // Before the first step the wall particles hold no extrapolated pressure yet: the probes
     // (wall forces, area sensors) see the state the first step will see.
@@ -306,7 +398,7 @@ std::vector<std::vector<double>> sample_probes(const Simulation<D>& sim,
         if (probe.type == ProbeType::surge_front)
             rows.push_back({double(merged[front++].front(Real(probe.min_thickness)))});
         else
-            rows.push_back(probe_row(sim, local, probe));
+            rows.push_back(probe_row(sim, local, contacts, probe));
     }
     return rows;
 }

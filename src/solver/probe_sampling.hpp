@@ -13,7 +13,9 @@ namespace sluice {
 // on rank 0, one CSV row (after the time) per due probe, in `due`'s order; nothing elsewhere.
 // The values are those of the probe functions over all particles, bit for bit, for any number
 // of ranks: each probe reads only particles inside its footprint, and the footprint's
-// particles reach rank 0 in the order a gather of all particles would give them.
+// particles reach rank 0 in the order a gather of all particles would give them. The wall
+// collisions an interpolated force probe adds (projection scheme) reach rank 0 from the rank
+// of each colliding fluid particle and are summed in particle-id order.
 template <int D>
 std::vector<std::vector<double>> sample_probes(const Simulation<D>& sim,
                                                const std::vector<std::size_t>& due);

@@ -463,6 +463,11 @@ const PressureSolveTotals* Simulation<D>::pressure_solve_totals() const {
 }
 
 template <int D>
+std::span<const WallContact<D>> Simulation<D>::wall_contacts() const {
+    return scheme_->wall_contacts();
+}
+
+template <int D>
 void Simulation<D>::write_trace(const std::string& path) const {
     if (opts_.trace && trace_)
         trace_->write(comm_, path);

@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace sluice {
@@ -101,6 +102,9 @@ public:
     [[nodiscard]] virtual const PressureSolveTotals* pressure_solve_totals() const {
         return nullptr;
     }
+    // Projection: the last step's wall collisions of this rank's fluid particles (none
+    // otherwise: WCSPH's walls act through pair forces only).
+    [[nodiscard]] virtual std::span<const WallContact<D>> wall_contacts() const { return {}; }
 };
 
 // What a Simulation lends its scheme, in units (docs/ARCHITECTURE.md, "Schemes"): a scheme's

@@ -53,6 +53,34 @@ TEST_CASE("pressure probe interpolates a hydrostatic field") {
     CHECK(std::isnan(pressure_probe(ps, QuinticKernel<2>(1.3 * dx), Vec<2>(3, 3))));
 }
 
+TEST_CASE("pressure probe reads each pressure above the applied floor") {
+    // A hydrostatic block whose top rows hold tension (as the projection scheme's solve can
+    // leave in a stretching jet, which its correction does not apply: projection.hpp, P7).
+    const Real dx = 0.02, height = 1.0;
+    Particles<2> ps;
+    fill_block(ps, 0, 1, height, dx);
+    for (std::size_t i = 0; i < ps.size(); ++i)
+        if (ps.x[i][1] > Real(0.8))
+            ps.p[i] = -5000;
+    const auto kernel = make_kernel<2>(KernelType::wendland_c2, 1.3 * dx);
+    // Deep: the floor changes nothing.
+    const Vec<2> deep(0.5, 0.4);
+    CHECK(pressure_probe(ps, kernel, deep, Real(0)) == pressure_probe(ps, kernel, deep));
+    CHECK(pressure_probe(ps, kernel, deep, Real(0)) ==
+          doctest::Approx(kRho * kG * (height - 0.4)).epsilon(1e-3));
+    // In the tension: raw -5000, read 0 above the floor.
+    const Vec<2> top(0.5, 0.9);
+    CHECK(pressure_probe(ps, kernel, top) == doctest::Approx(-5000));
+    CHECK(pressure_probe(ps, kernel, top, Real(0)) == 0);
+    // On the edge the clipped reading is the Shepard mean of max(p, 0): between 0 and the
+    // hydrostatic value, and above the raw mean.
+    const Vec<2> edge(0.5, 0.8);
+    const Real clipped = pressure_probe(ps, kernel, edge, Real(0));
+    CHECK(clipped > 0);
+    CHECK(clipped < kRho * kG * (height - 0.8));
+    CHECK(pressure_probe(ps, kernel, edge) < 0);
+}
+
 TEST_CASE("surge front ignores a detached droplet") {
     const Real dx = 0.02;
     Particles<2> ps;

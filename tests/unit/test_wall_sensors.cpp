@@ -143,6 +143,36 @@ TEST_CASE("force sensor reads no suction where the wall pairs clip at the floor 
     const SensorFace<2> face{Vec<2>(0, Real(0.25)), 0, -1, Real(0.05)};
     CHECK(wall_force_sensor(t.P, kernel, prm, face, dx) == 0);
     CHECK(wall_pressure_sensor(t.P, kernel, face, dx / 4) == doctest::Approx(-2000));
+    // Read as the pressure a scheme applies (the projection scheme: max(p, 0)), no suction.
+    CHECK(wall_pressure_sensor(t.P, kernel, face, dx / 4, Real(0)) == 0);
+}
+
+TEST_CASE("interpolated sensor reads each particle's pressure above the applied floor") {
+    // Hydrostatic below y = 0.3, tension above it: with the floor at 0 the sensor reads the
+    // Shepard mean of max(p, 0), which is the hydrostatic reading where the kernel sees only
+    // y < 0.3 and less than it (never below 0) where it reaches the tension.
+    HydrostaticCorner t;
+    const Real dx = t.dx, H = t.H;
+    for (std::size_t i = 0; i < t.P.size(); ++i)
+        if (t.P.x[i][1] > Real(0.3))
+            t.P.p[i] = -3000;
+    const AnyKernel<2> kernel = make_kernel<2>(KernelType::wendland_c2, Real(1.5) * dx);
+    const SensorFace<2> low{Vec<2>(0, Real(0.1)), 0, -1, Real(0.02)};
+    CHECK(wall_pressure_sensor(t.P, kernel, low, dx / 4, Real(0)) ==
+          doctest::Approx(kRho * kG * (H - Real(0.1))).epsilon(0.002));
+    CHECK(wall_pressure_sensor(t.P, kernel, low, dx / 4, Real(0)) ==
+          wall_pressure_sensor(t.P, kernel, low, dx / 4));
+    // Straddling y = 0.3: half the kernel weight at rho g (H - y) ~ 1962 Pa, half at -3000.
+    const SensorFace<2> edge{Vec<2>(0, Real(0.3)), 0, -1, 0};
+    const Real clipped = wall_pressure_sensor(t.P, kernel, edge, dx / 4, Real(0));
+    const Real raw = wall_pressure_sensor(t.P, kernel, edge, dx / 4);
+    CHECK(raw < 0);
+    CHECK(clipped > 0);
+    CHECK(clipped == doctest::Approx(kRho * kG * (H - Real(0.3)) / 2).epsilon(0.05));
+    // Tension everywhere near the sensor reads exactly the floor.
+    const SensorFace<2> high{Vec<2>(0, Real(0.45)), 0, -1, Real(0.02)};
+    CHECK(wall_pressure_sensor(t.P, kernel, high, dx / 4, Real(0)) == 0);
+    CHECK(wall_pressure_sensor(t.P, kernel, high, dx / 4) == doctest::Approx(-3000));
 }
 
 TEST_CASE("force sensor in 3-D averages its disc") {
@@ -291,4 +321,70 @@ TEST_CASE("interpolated force on a submerged box is Archimedes' buoyancy") {
     CHECK(no_bottom.force[2] ==
           doctest::Approx(-double(kRho * kG * (H - hi)) * double((hi - lo) * (hi - lo)))
               .epsilon(0.005));
+}
+
+TEST_CASE("wall contacts load the walls of their region, in an order of their own") {
+    // Three collisions: two on the x+ wall (at x = 1), one on the floor (y = 0).
+    std::vector<WallContact<2>> contacts{
+        {7, 100, Vec<2>(Real(1.005), Real(0.2)), Vec<2>(Real(3), Real(0.5))},
+        {2, 101, Vec<2>(Real(1.005), Real(0.4)), Vec<2>(Real(2), 0)},
+        {5, 200, Vec<2>(Real(0.5), Real(-0.005)), Vec<2>(0, Real(-4))},
+    };
+    const Vec<2> lo(1, -1), hi(2, 2), about(1, 0);
+    const WallLoad wall = contact_wall_load(contacts, lo, hi, about);
+    CHECK(wall.pairs == 2);
+    CHECK(wall.force[0] == doctest::Approx(5));
+    CHECK(wall.force[1] == doctest::Approx(0.5));
+    // M = sum (x_w - c) x F: (0.005, 0.2) x (3, 0.5) + (0.005, 0.4) x (2, 0).
+    CHECK(wall.moment[2] == doctest::Approx(0.005 * 0.5 - 0.2 * 3 + 0.005 * 0 - 0.4 * 2));
+    // The floor's contact alone.
+    const WallLoad floor = contact_wall_load(contacts, Vec<2>(-1, -1), Vec<2>(Real(0.9), 0), about);
+    CHECK(floor.pairs == 1);
+    CHECK(floor.force[1] == doctest::Approx(-4));
+    // The sum does not depend on the order the contacts come in (ranks, threads), bit for bit,
+    // even where a plain sum would round differently: 1 + 1e17 - 1e17 is 0 in one order, 1 in
+    // the other.
+    const Vec<2> at(Real(1.005), Real(0.3));
+    const std::vector<WallContact<2>> rounding{{1, 100, at, Vec<2>(1, 0)},
+                                               {2, 101, at, Vec<2>(Real(1e17), 0)},
+                                               {3, 102, at, Vec<2>(Real(-1e17), 0)}};
+    const std::vector<WallContact<2>> reversed(rounding.rbegin(), rounding.rend());
+    const WallLoad forward = contact_wall_load(rounding, lo, hi, about);
+    const WallLoad backward = contact_wall_load(reversed, lo, hi, about);
+    CHECK(forward.force == backward.force);
+    CHECK(forward.moment == backward.moment);
+    // Nothing in the region: no load.
+    CHECK(contact_wall_load(contacts, Vec<2>(5, 5), Vec<2>(6, 6), about).force ==
+          std::array<double, 3>{});
+}
+
+TEST_CASE("wall contacts near an area sensor read as traction spread over h") {
+    // The x+ wall at x = 1, wall particles on a dx = 0.01 lattice behind it (x = 1.005, ...),
+    // h = 0.015: each contact's normal force is spread over a strip 0.03 wide.
+    const Real dx = 0.01, h = 0.015;
+    const std::vector<WallContact<2>> contacts{
+        {1, 10, Vec<2>(Real(1.005), Real(0.205)), Vec<2>(Real(0.4), Real(0.1))},
+        {2, 11, Vec<2>(Real(1.015), Real(0.205)), Vec<2>(Real(0.2), 0)}, // second layer
+        {3, 12, Vec<2>(Real(1.005), Real(0.215)), Vec<2>(Real(0.3), 0)},
+        {4, 13, Vec<2>(Real(0.5), Real(-0.005)), Vec<2>(0, Real(-9))}, // the floor
+    };
+    // A face inside every strip ([0.2, 0.22] meets [0.19, 0.22] and [0.2, 0.23]): at
+    // y in (0.2, 0.22) all three wall-side contacts count, 0.9 N/m over 0.03 m.
+    const SensorFace<2> inside{Vec<2>(1, Real(0.21)), 0, 1, Real(0.018)};
+    CHECK(contact_traction(contacts, inside, dx, Real(0.03), h) == doctest::Approx(0.9 / 0.03));
+    // Too shallow a depth leaves the second layer out.
+    CHECK(contact_traction(contacts, inside, dx, Real(0.01), h) == doctest::Approx(0.7 / 0.03));
+    // A face covering a whole wall reads each contact's whole force over its area: here a
+    // 0.2 m face centred on the contacts, 0.9 N/m over 0.2 m.
+    const SensorFace<2> wide{Vec<2>(1, Real(0.21)), 0, 1, Real(0.2)};
+    CHECK(contact_traction(contacts, wide, dx, Real(0.03), h) ==
+          doctest::Approx(0.9 / 0.2).epsilon(1e-3));
+    // Half in the strips of the contacts at 0.205 only: [0.17, 0.19] is outside all,
+    // [0.19, 0.2] within 0.015 of 0.205 only.
+    const SensorFace<2> edge{Vec<2>(1, Real(0.19)), 0, 1, Real(0.02)};
+    CHECK(contact_traction(contacts, edge, dx, Real(0.03), h) ==
+          doctest::Approx(0.6 / 0.03 / 2).epsilon(0.02));
+    // No contact near the face: nothing.
+    const SensorFace<2> away{Vec<2>(1, Real(0.5)), 0, 1, 2 * dx};
+    CHECK(contact_traction(contacts, away, dx, Real(0.03), h) == 0);
 }

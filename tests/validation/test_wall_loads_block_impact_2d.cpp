@@ -9,6 +9,15 @@
 // ones. The impulse is the sum the leap-frog applies (integrator.hpp): the force of step k (sampled
 // at t_k) acts for (dt_{k-1} + dt_k)/2, and the last one dt/2 more for the velocity estimate the
 // particles carry.
+//
+// The same block under the projection scheme, whose force probe reads the interpolated pressure
+// on the wall plus the momentum its wall collisions give the wall (wall_loads.hpp,
+// contact_wall_load): the step's velocity update is explicit, so the force sampled after step k
+// acts for dt_k. Its operators are not antisymmetric (the fluid's internal forces need not
+// cancel) and the interpolated pressure is not the momentum the correction applies, so the
+// balance holds less tightly than WCSPH's. Measured (306 steps to 0.3 s, x-momentum +10 to
+// -0.14 kg m/s per m): the wall's impulse 9.85 N s/m, of which the collisions 1.54, is 2.9 %
+// short of the momentum change; the pressure alone would be 18 % short.
 #include "sluice/io/case_reader.hpp"
 #include "sluice/solver/run.hpp"
 #include "sluice/solver/simulation.hpp"
@@ -19,6 +28,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -38,13 +49,26 @@ double fluid_momentum_x(const Particles<2>& P) {
     return px;
 }
 
-} // namespace
+// The fluid's x-momentum before and after the run, and the wall probe's impulse over it, from
+// the same case run through run_case (the probe CSV) and through the Simulation API (the
+// particles and the steps; the run is deterministic: the same steps as run_case's).
+struct ImpulseBalance {
+    double p0 = 0, p1 = 0; // fluid x-momentum [kg m/s per m]
+    double impulse = 0;    // the probe's, as the scheme applies its forces [N s/m]
+    double trapezoid = 0;  // the trapezoidal rule over the samples
+    double contacts = 0;   // of it, the wall collisions' (the projection scheme's)
+    double f_max = 0;
+    std::size_t steps = 0;
+    [[nodiscard]] double error() const { return std::abs(impulse + (p1 - p0)) / std::abs(p1 - p0); }
+};
 
-TEST_CASE("Block hitting a wall: the force's impulse equals the momentum change") {
-    const CaseConfig cfg = read_case(data_path("wall_loads/block_impact_2d.toml"));
-    const std::string out = (std::filesystem::temp_directory_path() /
-                             ("sluice_test_wall_loads_block_impact_" + std::to_string(::getpid())))
-                                .string();
+// leapfrog: the force sampled at t_k acts for (dt_{k-1} + dt_k)/2 (WCSPH's integrator);
+// otherwise the force sampled after step k acts for dt_k (the projection step).
+ImpulseBalance impulse_balance(const CaseConfig& cfg, const std::string& tag, bool leapfrog) {
+    const std::string out =
+        (std::filesystem::temp_directory_path() /
+         ("sluice_test_wall_loads_block_impact_" + tag + "_" + std::to_string(::getpid())))
+            .string();
     std::filesystem::remove_all(out);
     RunOptions opts;
     opts.out_dir = out;
@@ -53,46 +77,87 @@ TEST_CASE("Block hitting a wall: the force's impulse equals the momentum change"
     const RunResult result = run_case(cfg, opts);
     const auto rows = read_csv(out + "/probes/wall.csv");
 
-    // The same run through the Simulation API, for the particles' momentum before and after
-    // and the time steps (the run is deterministic: the same steps as run_case's).
     SimulationOptions so;
     so.threads = 1;
     Simulation<2> sim(cfg, so);
-    const double p0 = fluid_momentum_x(sim.particles());
+    ImpulseBalance b;
+    b.p0 = fluid_momentum_x(sim.particles());
     std::vector<double> dts;
     while (sim.time() < cfg.end_time * (1 - 1e-12)) {
         const double t = sim.time();
         sim.step();
         dts.push_back(sim.time() - t);
+        for (const WallContact<2>& c : sim.wall_contacts())
+            b.contacts += double(c.force[0]) * dts.back();
     }
-    const double p1 = fluid_momentum_x(sim.particles());
+    b.p1 = fluid_momentum_x(sim.particles());
     REQUIRE(static_cast<long>(dts.size()) == result.steps);
     REQUIRE(rows.size() == dts.size() + 1); // the start and every step
 
-    double leapfrog = 0, trapezoid = 0, f_max = 0, t_prev = 0;
+    double t_prev = 0;
     const std::size_t n = dts.size();
+    b.steps = n;
     for (std::size_t k = 0; k <= n; ++k) {
         const double t = std::stod(rows[k].at(0)), fx = std::stod(rows[k].at(1));
         CHECK(std::abs(t - t_prev - (k > 0 ? dts[k - 1] : 0.0)) < 1e-6);
         t_prev = t;
-        f_max = std::max(f_max, std::abs(fx));
-        if (k < n)
-            leapfrog += fx * ((k > 0 ? dts[k - 1] : 0.0) + dts[k]) / 2;
-        if (k == n - 1)
-            leapfrog += fx * dts[k] / 2;
+        b.f_max = std::max(b.f_max, std::abs(fx));
+        if (leapfrog) {
+            if (k < n)
+                b.impulse += fx * ((k > 0 ? dts[k - 1] : 0.0) + dts[k]) / 2;
+            if (k == n - 1)
+                b.impulse += fx * dts[k] / 2;
+        } else if (k > 0) {
+            b.impulse += fx * dts[k - 1];
+        }
         if (k > 0)
-            trapezoid += (fx + std::stod(rows[k - 1].at(1))) * dts[k - 1] / 2;
+            b.trapezoid += (fx + std::stod(rows[k - 1].at(1))) * dts[k - 1] / 2;
     }
-    const double dp = p1 - p0;
-    const double err = std::abs(leapfrog + dp) / std::abs(dp);
-    const double err_trapezoid = std::abs(trapezoid + dp) / std::abs(dp);
-    MESSAGE("block impact: fluid x-momentum "
-            << p0 << " -> " << p1 << " kg m/s per m, wall "
-            << "impulse " << leapfrog << " N s/m (trapezoid " << trapezoid << "), peak force "
-            << f_max << " N/m, " << n << " steps; impulse error " << 100 * err << " % (trapezoid "
-            << 100 * err_trapezoid << " %)");
-    CHECK(p0 > 0);
-    CHECK(p1 < 0); // it rebounded
-    CHECK(err < 0.05);
     std::filesystem::remove_all(out);
+    return b;
+}
+
+} // namespace
+
+TEST_CASE("Block hitting a wall: the force's impulse equals the momentum change") {
+    const CaseConfig cfg = read_case(data_path("wall_loads/block_impact_2d.toml"));
+    const ImpulseBalance b = impulse_balance(cfg, "wcsph", true);
+    const double err_trapezoid = std::abs(b.trapezoid + (b.p1 - b.p0)) / std::abs(b.p1 - b.p0);
+    MESSAGE("block impact: fluid x-momentum "
+            << b.p0 << " -> " << b.p1 << " kg m/s per m, wall "
+            << "impulse " << b.impulse << " N s/m (trapezoid " << b.trapezoid << "), peak force "
+            << b.f_max << " N/m, " << b.steps << " steps; impulse error " << 100 * b.error()
+            << " % (trapezoid " << 100 * err_trapezoid << " %)");
+    CHECK(b.p0 > 0);
+    CHECK(b.p1 < 0); // it rebounded
+    CHECK(b.error() < 0.05);
+}
+
+TEST_CASE("Block hitting a wall under the projection scheme: pressure and contacts") {
+    // The case without the WCSPH-only keys.
+    std::ifstream in(data_path("wall_loads/block_impact_2d.toml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string t = text.str();
+    for (const char* key : {"density = \"continuity\"\n", "delta_sph = 0.1\n",
+                            "artificial_viscosity = 0.02\n", "no_slip = false\n"}) {
+        const auto pos = t.find(key);
+        REQUIRE(pos != std::string::npos);
+        t.erase(pos, std::string(key).size());
+    }
+    const CaseConfig cfg =
+        read_case_text(t, "block_impact_projection_2d.toml", {"numerics.scheme=\"projection\""});
+    REQUIRE(cfg.probes.at(0).reading == SensorReading::interpolated);
+    const ImpulseBalance b = impulse_balance(cfg, "projection", false);
+    const double dp = b.p1 - b.p0;
+    const double err_pressure = std::abs(b.impulse - b.contacts + dp) / std::abs(dp);
+    MESSAGE("block impact, projection: fluid x-momentum "
+            << b.p0 << " -> " << b.p1 << " kg m/s per m, wall impulse " << b.impulse
+            << " N s/m (contacts " << b.contacts << "), peak force " << b.f_max << " N/m, "
+            << b.steps << " steps; impulse error " << 100 * b.error()
+            << " %, of the pressure alone " << 100 * err_pressure << " %");
+    CHECK(b.p0 > 0);
+    CHECK(b.contacts > 0);
+    CHECK(b.error() < 0.05);
+    CHECK(b.error() < err_pressure);
 }

@@ -6,6 +6,7 @@
 #include "sluice/physics/cell_hash.hpp"
 #include "sluice/physics/kernels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -29,11 +30,15 @@ struct is_variant<std::variant<T...>> : std::true_type {};
 //   p(point) = sum_j p_j W_j V_j / sum_j W_j V_j,   V_j = m_j / rho_j,
 // so a probe near the free surface or a wall is not biased by the missing neighbours.
 // Returns NaN when no fluid particle lies within the kernel support of `point` (the probe is
-// dry). `kernel` is any kernel type of kernels.hpp or an AnyKernel<D>.
+// dry). `kernel` is any kernel type of kernels.hpp or an AnyKernel<D>. Each p_j is read as
+// max(p_j, p_min): the pressure the scheme applies (the projection scheme applies no tension,
+// projection.hpp P7; WCSPH reads p_min = -infinity, every pressure as it is).
 template <int D, class K>
-Real pressure_probe(const Particles<D>& ps, const K& kernel, const Vec<D>& point) {
+Real pressure_probe(const Particles<D>& ps, const K& kernel, const Vec<D>& point,
+                    Real p_min = -std::numeric_limits<Real>::infinity()) {
     if constexpr (detail::is_variant<K>::value) {
-        return std::visit([&](const auto& k) { return pressure_probe(ps, k, point); }, kernel);
+        return std::visit([&](const auto& k) { return pressure_probe(ps, k, point, p_min); },
+                          kernel);
     } else {
         const Real support2 = kernel.support() * kernel.support();
         Real num = 0, den = 0;
@@ -44,7 +49,7 @@ Real pressure_probe(const Particles<D>& ps, const K& kernel, const Vec<D>& point
             if (r2 >= support2)
                 continue;
             const Real wv = kernel.W(std::sqrt(r2)) * ps.mass[j] / ps.rho[j];
-            num += ps.p[j] * wv;
+            num += std::max(ps.p[j], p_min) * wv;
             den += wv;
         }
         return den > 0 ? num / den : std::numeric_limits<Real>::quiet_NaN();
@@ -172,8 +177,8 @@ extern template Real water_level<3>(const Particles<3>&, const std::vector<std::
 extern template Real surge_front<2>(const Particles<2>&, const std::vector<std::size_t>&, Real);
 extern template Real surge_front<3>(const Particles<3>&, const std::vector<std::size_t>&, Real);
 extern template Real pressure_probe<2, AnyKernel<2>>(const Particles<2>&, const AnyKernel<2>&,
-                                                     const Vec<2>&);
+                                                     const Vec<2>&, Real);
 extern template Real pressure_probe<3, AnyKernel<3>>(const Particles<3>&, const AnyKernel<3>&,
-                                                     const Vec<3>&);
+                                                     const Vec<3>&, Real);
 
 } // namespace sluice

@@ -27,6 +27,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace sluice {
@@ -119,11 +120,13 @@ Real wall_force_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
 // bias (a fluid-only Shepard sum there would read the mean pressure about one smoothing
 // length inside the fluid: rho g h too low on a floor). The reading is the mean of the
 // sample points (equal area weights). Shepard normalisation makes a lone droplet at the wall
-// read its full pressure, which is why the force reading is the default. NaN when no sample
-// point has a fluid particle within the support (a dry sensor).
+// read its full pressure, which is why the force reading is the default. Each p_j is read as
+// max(p_j, p_min), the pressure the scheme applies (pressure_probe). NaN when no sample point
+// has a fluid particle within the support (a dry sensor).
 template <int D>
 Real wall_pressure_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
-                          const SensorFace<D>& face, Real spacing);
+                          const SensorFace<D>& face, Real spacing,
+                          Real p_min = -std::numeric_limits<Real>::infinity());
 
 // A rectangle (3-D) or segment (2-D) of a wall's surface: the plane x[normal_axis] = at, the
 // wall on the side `into_wall` (as SensorFace), spanning [lo, hi] along the other axes (the
@@ -154,6 +157,41 @@ WallLoad interpolated_wall_load(const Particles<D>& P, const AnyKernel<D>& kerne
                                 const std::vector<WallPatch<D>>& patches, Real spacing,
                                 Real p_floor, const Vec<D>& moment_point);
 
+// A wall collision of the projection scheme's last step (projection.hpp, wall_collision): fluid
+// particle `fluid` came closer than the collision distance to wall particle `wall` (at
+// `wall_x`) and lost the velocity it approached with. `force` = m (v_before - v_after) / dt is
+// what the wall took [N; 2-D: N/m]: the momentum the pressure did not stop, which a force
+// reading from the interpolated pressure alone would leave out.
+template <int D>
+struct WallContact {
+    ParticleId fluid = 0;
+    ParticleId wall = 0;
+    Vec<D> wall_x = Vec<D>::Zero();
+    Vec<D> force = Vec<D>::Zero();
+};
+
+// The load of the contacts whose wall particle lies in the closed box [lo, hi]:
+// F = sum force, M = sum (wall_x - moment_point) x force, summed in (fluid, wall) id order so
+// that it does not depend on the order the contacts were recorded in (threads, ranks).
+// Returned counts: wall_particles = 0, pairs = contacts summed.
+template <int D>
+WallLoad contact_wall_load(std::vector<WallContact<D>> contacts, const Vec<D>& lo, const Vec<D>& hi,
+                           const Vec<D>& moment_point);
+
+// The traction the contacts give the wall under an area sensor's face, per unit area. Each
+// contact's normal force (into the wall) is spread evenly over the part of the surface within
+// `spread` of its wall particle tangentially (a strip 2 spread wide in 2-D, a square in 3-D):
+// with spread = h, the scale over which the interpolated pressure is smoothed, so that the
+// two parts of the reading see the wall alike, and a collision that one column takes in one
+// step does not read as the pressure of that column alone. The face is sampled on a lattice of
+// spacing wall_dx/8 and the reading is the mean over the sample points; contacts with wall
+// particles more than `depth` behind the surface are not counted. What the projection
+// scheme's area sensors add to the interpolated pressure (a transducer reads the whole normal
+// force); 0 where no contact lies near the face. Summed in (fluid, wall) id order.
+template <int D>
+Real contact_traction(const std::vector<WallContact<D>>& contacts, const SensorFace<D>& face,
+                      Real wall_dx, Real depth, Real spread);
+
 // The Adami state of every dummy wall particle (pressure, density, mass = rho_w wall_volume)
 // from the fluid around it, as the step's walls stage computes it (walls.hpp,
 // dummy_wall_state). The run calls it on its copy of the initial state, whose wall particles
@@ -177,15 +215,23 @@ extern template WallLoad wall_load<3>(const Particles<3>&, const AnyKernel<3>&,
                                       const WallLoadParams<3>&, const std::vector<std::size_t>&,
                                       const Vec<3>&);
 extern template Real wall_pressure_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
-                                             const SensorFace<2>&, Real);
+                                             const SensorFace<2>&, Real, Real);
 extern template Real wall_pressure_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
-                                             const SensorFace<3>&, Real);
+                                             const SensorFace<3>&, Real, Real);
 extern template WallLoad interpolated_wall_load<2>(const Particles<2>&, const AnyKernel<2>&,
                                                    const std::vector<WallPatch<2>>&, Real, Real,
                                                    const Vec<2>&);
 extern template WallLoad interpolated_wall_load<3>(const Particles<3>&, const AnyKernel<3>&,
                                                    const std::vector<WallPatch<3>>&, Real, Real,
                                                    const Vec<3>&);
+extern template WallLoad contact_wall_load<2>(std::vector<WallContact<2>>, const Vec<2>&,
+                                              const Vec<2>&, const Vec<2>&);
+extern template WallLoad contact_wall_load<3>(std::vector<WallContact<3>>, const Vec<3>&,
+                                              const Vec<3>&, const Vec<3>&);
+extern template Real contact_traction<2>(const std::vector<WallContact<2>>&, const SensorFace<2>&,
+                                         Real, Real, Real);
+extern template Real contact_traction<3>(const std::vector<WallContact<3>>&, const SensorFace<3>&,
+                                         Real, Real, Real);
 extern template Real wall_force_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
                                           const WallLoadParams<2>&, const SensorFace<2>&, Real);
 extern template Real wall_force_sensor<3>(const Particles<3>&, const AnyKernel<3>&,

@@ -14,6 +14,7 @@
 #include "sluice/physics/momentum.hpp"
 #include "sluice/physics/riemann.hpp"
 #include "sluice/physics/timestep.hpp"
+#include "sluice/physics/wall_loads.hpp"
 #include "sluice/physics/walls.hpp"
 #include "sluice/solver/halo_plan.hpp"
 #include "sluice/solver/neighbour_lists.hpp"
@@ -35,6 +36,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -161,6 +163,9 @@ public:
     // the run; null with the WCSPH scheme.
     [[nodiscard]] const PressureSolveRecord* last_pressure_solve() const;
     [[nodiscard]] const PressureSolveTotals* pressure_solve_totals() const;
+    // The last step's wall collisions of this rank's fluid particles (projection scheme; none
+    // with WCSPH): what the force probes add to the interpolated pressure's load.
+    [[nodiscard]] std::span<const WallContact<D>> wall_contacts() const;
 
     // Seconds spent in rebinning and re-decomposition between steps, summed over the run.
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }

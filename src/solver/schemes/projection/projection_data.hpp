@@ -6,6 +6,7 @@
 #include "sluice/core/particles.hpp"
 #include "sluice/physics/ls_weight.hpp"
 #include "sluice/physics/selected_operators.hpp"
+#include "sluice/physics/wall_loads.hpp"
 #include "sluice/solver/block_preconditioner.hpp"
 #include "sluice/solver/coarse_system.hpp"
 #include "sluice/solver/halo_fields.hpp"
@@ -45,6 +46,8 @@ struct ProjectionGroup {
     std::vector<int> ap_outer;
     std::vector<std::int32_t> ap_col;
     std::vector<double> ap_val;
+    // The wall collisions of this group's fluid particles in the last correction.
+    std::vector<WallContact<D>> contacts;
 };
 
 // The coarse level of the two-level preconditioner (docs/PROJECTION.md, "Preconditioner"),
@@ -126,6 +129,9 @@ struct ProjectionData {
     OperatorSelections selections; // [neighbours.<operator>] (all radius by default)
 
     PressureSolveRecord last; // the last step's solve
+    // The last step's wall collisions on this rank (its owned fluid particles'), for the force
+    // probes (the groups' lists, gathered after the correction).
+    std::vector<WallContact<D>> contacts;
     PressureSolveTotals totals;
 
     void resize(std::size_t n) {

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ public:
     }
     [[nodiscard]] const PressureSolveTotals* pressure_solve_totals() const override {
         return &proj_->totals;
+    }
+    [[nodiscard]] std::span<const WallContact<D>> wall_contacts() const override {
+        return proj_->contacts;
     }
 
 private:

@@ -311,7 +311,8 @@ void ProjectionScheme<D>::correct_stage(int group) {
     ProjectionData<D>& d = *proj_;
     const auto gi = static_cast<std::size_t>(group);
     const NeighbourList<D>& list = neighbours_.lists[gi];
-    const ProjectionGroup<D>& G = d.groups[gi];
+    ProjectionGroup<D>& G = d.groups[gi];
+    G.contacts.clear();
     const std::vector<Vec<D>>& grad_coefficient =
         case_.cfg.projection.correction_gradient == CorrectionGradient::first_order ? G.grad_correct
                                                                                     : G.grad;
@@ -373,10 +374,16 @@ void ProjectionScheme<D>::correct_stage(int group) {
         }
         Vec<D> v = corrected_velocity<D>(d.u_star[i], grad, rho0, Real(clock_.dt));
         const Real collision = d.collision_distance;
-        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p)
-            if (P_.kind[list.j[p]] == Kind::wall)
-                v = wall_collision<D>(v, pair_offset<D>(list, P_.x, i, p), collision,
-                                      Real(clock_.dt));
+        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p) {
+            const std::uint32_t j = list.j[p];
+            if (P_.kind[j] != Kind::wall)
+                continue;
+            const Vec<D> before = v;
+            v = wall_collision<D>(v, pair_offset<D>(list, P_.x, i, p), collision, Real(clock_.dt));
+            if (v != before)
+                G.contacts.push_back(
+                    {P_.id[i], P_.id[j], P_.x[j], P_.mass[i] * (before - v) / Real(clock_.dt)});
+        }
         Vec<D> x =
             projection_drift<D>(P_.x[i], v, Real(clock_.dt), case_.planes,
                                 Real(case_.cfg.restitution), shifting ? &P_.shift[i] : nullptr);
@@ -430,6 +437,9 @@ void ProjectionScheme<D>::run_projection(tasks::StepGraph& graph) {
         if (error.empty())
             error = e.what();
     }
+    d.contacts.clear();
+    for (const ProjectionGroup<D>& G : d.groups)
+        d.contacts.insert(d.contacts.end(), G.contacts.begin(), G.contacts.end());
     // Every rank has the same message (the decision came from global sums); the step's
     // reduction raises it as a RunError.
     if (!unconverged.empty() && !results_.failure.empty())
