@@ -357,6 +357,37 @@ Real force_sensor_with(const Particles<D>& P, const K& kernel, const WallLoadPar
     return Real(double(prm.p_gauge) + sum / double(points));
 }
 
+// Whether x lies in the closed box [lo, hi].
+template <int D>
+bool in_closed_box(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
+    for (int a = 0; a < D; ++a)
+        if (!(x[a] >= lo[a] && x[a] <= hi[a]))
+            return false;
+    return true;
+}
+
+// The contacts that `keep` accepts, in (fluid, wall) id order (a pair meets once per step,
+// except through two periodic images, whose positions break the tie): the order every contact
+// sum follows, so that it does not depend on the order the contacts were recorded in (threads,
+// ranks).
+template <int D, class Keep>
+std::vector<const WallContact<D>*> contacts_in_id_order(const std::vector<WallContact<D>>& contacts,
+                                                        Keep&& keep) {
+    std::vector<const WallContact<D>*> out;
+    for (const WallContact<D>& c : contacts)
+        if (keep(c))
+            out.push_back(&c);
+    std::sort(out.begin(), out.end(), [](const WallContact<D>* a, const WallContact<D>* b) {
+        if (a->fluid != b->fluid)
+            return a->fluid < b->fluid;
+        if (a->wall != b->wall)
+            return a->wall < b->wall;
+        return std::lexicographical_compare(a->wall_x.data(), a->wall_x.data() + D,
+                                            b->wall_x.data(), b->wall_x.data() + D);
+    });
+    return out;
+}
+
 } // namespace
 
 template <int D>
@@ -388,15 +419,9 @@ template <int D>
 std::vector<std::size_t> wall_particles_in(const Particles<D>& P, const Vec<D>& lo,
                                            const Vec<D>& hi) {
     std::vector<std::size_t> out;
-    for (std::size_t j = 0; j < P.size(); ++j) {
-        if (P.kind[j] != Kind::wall)
-            continue;
-        bool in = true;
-        for (int a = 0; a < D; ++a)
-            in = in && P.x[j][a] >= lo[a] && P.x[j][a] <= hi[a];
-        if (in)
+    for (std::size_t j = 0; j < P.size(); ++j)
+        if (P.kind[j] == Kind::wall && in_closed_box<D>(P.x[j], lo, hi))
             out.push_back(j);
-    }
     return out;
 }
 
@@ -426,30 +451,13 @@ WallLoad interpolated_wall_load(const Particles<D>& P, const AnyKernel<D>& kerne
 }
 
 template <int D>
-WallLoad contact_wall_load(std::vector<WallContact<D>> contacts, const Vec<D>& lo, const Vec<D>& hi,
-                           const Vec<D>& moment_point) {
-    const auto inside = [&](const Vec<D>& x) {
-        for (int d = 0; d < D; ++d)
-            if (x[d] < lo[d] || x[d] > hi[d])
-                return false;
-        return true;
-    };
-    std::erase_if(contacts, [&](const WallContact<D>& c) { return !inside(c.wall_x); });
-    // A pair meets once per step, except through two periodic images: the position breaks
-    // that tie.
-    std::sort(contacts.begin(), contacts.end(),
-              [](const WallContact<D>& a, const WallContact<D>& b) {
-                  if (a.fluid != b.fluid)
-                      return a.fluid < b.fluid;
-                  if (a.wall != b.wall)
-                      return a.wall < b.wall;
-                  return std::lexicographical_compare(a.wall_x.data(), a.wall_x.data() + D,
-                                                      b.wall_x.data(), b.wall_x.data() + D);
-              });
+WallLoad contact_wall_load(const std::vector<WallContact<D>>& contacts, const Vec<D>& lo,
+                           const Vec<D>& hi, const Vec<D>& moment_point) {
+    const auto inside = [&](const WallContact<D>& c) { return in_closed_box<D>(c.wall_x, lo, hi); };
     WallLoad out;
-    for (const WallContact<D>& c : contacts) {
-        add_load<D>(out, (c.wall_x - moment_point).template cast<double>(),
-                    c.force.template cast<double>());
+    for (const WallContact<D>* c : contacts_in_id_order(contacts, inside)) {
+        add_load<D>(out, (c->wall_x - moment_point).template cast<double>(),
+                    c->force.template cast<double>());
         ++out.pairs;
     }
     return out;
@@ -462,17 +470,13 @@ Real contact_traction(const std::vector<WallContact<D>>& contacts, const SensorF
     const std::array<int, 2> tangent = tangent_axes<D>(axis);
     const Real surface = face.centre[axis];
     const Real reach = face.diameter / 2 + spread;
-    std::vector<const WallContact<D>*> near;
-    for (const WallContact<D>& c : contacts) {
+    const auto near = contacts_in_id_order(contacts, [&](const WallContact<D>& c) {
         const Real d = Real(face.into_wall) * (c.wall_x[axis] - surface);
-        if (d > 0 && d < depth && tangential_distance<D>(c.wall_x, face.centre, tangent) <= reach)
-            near.push_back(&c);
-    }
+        return d > 0 && d < depth &&
+               tangential_distance<D>(c.wall_x, face.centre, tangent) <= reach;
+    });
     if (near.empty())
         return 0;
-    std::sort(near.begin(), near.end(), [](const WallContact<D>* a, const WallContact<D>* b) {
-        return a->fluid != b->fluid ? a->fluid < b->fluid : a->wall < b->wall;
-    });
     const double area = D == 3 ? 4.0 * double(spread) * double(spread) : 2.0 * double(spread);
     double sum = 0;
     std::size_t points = 0;
@@ -508,10 +512,10 @@ template Real wall_pressure_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
                                       const SensorFace<2>&, Real, Real);
 template Real wall_pressure_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
                                       const SensorFace<3>&, Real, Real);
-template WallLoad contact_wall_load<2>(std::vector<WallContact<2>>, const Vec<2>&, const Vec<2>&,
-                                       const Vec<2>&);
-template WallLoad contact_wall_load<3>(std::vector<WallContact<3>>, const Vec<3>&, const Vec<3>&,
-                                       const Vec<3>&);
+template WallLoad contact_wall_load<2>(const std::vector<WallContact<2>>&, const Vec<2>&,
+                                       const Vec<2>&, const Vec<2>&);
+template WallLoad contact_wall_load<3>(const std::vector<WallContact<3>>&, const Vec<3>&,
+                                       const Vec<3>&, const Vec<3>&);
 template Real contact_traction<2>(const std::vector<WallContact<2>>&, const SensorFace<2>&, Real,
                                   Real, Real);
 template Real contact_traction<3>(const std::vector<WallContact<3>>&, const SensorFace<3>&, Real,

@@ -114,6 +114,11 @@ std::vector<WallPatch<D>> force_patches(const CaseConfig& cfg, const ProbeConfig
     return out;
 }
 
+template <int D>
+Real kernel_support(const Simulation<D>& sim) {
+    return std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+}
+
 // Every particle a probe's value depends on lies in its footprint. The kernel sums of the
 // pressure probes and the wall loads reach one support from the points and wall particles they
 // sum for; before the first step the wall particles they read are refreshed from the fluid
@@ -122,7 +127,7 @@ std::vector<WallPatch<D>> force_patches(const CaseConfig& cfg, const ProbeConfig
 template <int D>
 Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
     const Real inf = std::numeric_limits<Real>::infinity();
-    const Real reach = 2 * std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+    const Real reach = 2 * kernel_support(sim);
     const Real dx = Real(sim.config().dx);
     Box<D> box{Vec<D>::Constant(-inf), Vec<D>::Constant(inf)};
     switch (probe.type) {
@@ -164,24 +169,6 @@ WallLoadParams<D> wall_load_params(const Simulation<D>& sim) {
     return w;
 }
 
-// The lowest pressure the scheme applies to the fluid, below which a pressure probe does not
-// read: the projection scheme with a free surface applies max(p, 0) (projection.hpp, P7: the
-// solve's tension is not applied, so the fluid never feels it and no wall carries it);
-// without a free surface (its level fixed by the solver's gauge) and under WCSPH, whose
-// fluid pairs apply tension, every pressure is read as it is.
-template <int D>
-Real applied_pressure_floor(const Simulation<D>& sim) {
-    if (sim.config().scheme != Scheme::projection)
-        return -std::numeric_limits<Real>::infinity();
-    const PressureSolveRecord* solve = sim.last_pressure_solve();
-    return solve != nullptr && solve->free_level ? -std::numeric_limits<Real>::infinity() : Real(0);
-}
-
-template <int D>
-Real kernel_support(const Simulation<D>& sim) {
-    return std::visit([](const auto& k) { return k.support(); }, sim.kernel());
-}
-
 // An interpolated area sensor's face, and the box holding the wall particles whose contacts
 // it reads (contact_traction: h beyond the face, a support deep).
 template <int D>
@@ -196,7 +183,7 @@ SensorFace<D> sensor_face(const ProbeConfig& probe) {
 template <int D>
 Box<D> sensor_contact_box(const Simulation<D>& sim, const ProbeConfig& probe) {
     const SensorFace<D> face = sensor_face<D>(probe);
-    const Real reach = face.diameter / 2 + Real(sim.config().h_over_dx * sim.config().dx);
+    const Real reach = face.diameter / 2 + Real(sim.h());
     Box<D> box{face.centre.array() - reach, face.centre.array() + reach};
     const int a = face.normal_axis;
     const Real far = face.centre[a] + Real(face.into_wall) * kernel_support(sim);
@@ -215,7 +202,7 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
     const Real dx = Real(cfg.dx);
     switch (probe.type) {
     case ProbeType::pressure: {
-        const Real p_min = applied_pressure_floor(sim);
+        const Real p_min = sim.applied_pressure_floor();
         if (probe.diameter <= 0) {
             Vec<D> point;
             for (int d = 0; d < D; ++d)
@@ -228,8 +215,8 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         // The pressure on the face, and the traction of the wall collisions under it
         // (projection; none under WCSPH).
         const Real pressure = wall_pressure_sensor(P, sim.kernel(), face, dx / 4, p_min);
-        const Real h = Real(cfg.h_over_dx * cfg.dx);
-        return {double(pressure + contact_traction(contacts, face, dx, kernel_support(sim), h))};
+        return {double(pressure +
+                       contact_traction(contacts, face, dx, kernel_support(sim), Real(sim.h())))};
     }
     case ProbeType::water_level: {
         std::optional<Real> y;
@@ -243,20 +230,19 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
             for (int d = 0; d < D; ++d)
                 about[d] = Real((*probe.moment_about)[static_cast<std::size_t>(d)]);
         const WallLoadParams<D> prm = wall_load_params(sim);
+        const Box<D> region = force_box<D>(cfg, probe);
         WallLoad load;
         if (probe.reading == SensorReading::interpolated) {
             // The pressure on the wall's surfaces, and the momentum the scheme's wall
             // collisions gave the wall particles of the region (projection; none under WCSPH).
             load = interpolated_wall_load(P, sim.kernel(), force_patches<D>(cfg, probe), dx / 2,
                                           prm.p_floor, about);
-            const Box<D> region = force_box<D>(cfg, probe);
             const WallLoad contact = contact_wall_load(contacts, region.lo, region.hi, about);
             for (std::size_t a = 0; a < 3; ++a) {
                 load.force[a] += contact.force[a];
                 load.moment[a] += contact.moment[a];
             }
         } else {
-            const Box<D> region = force_box<D>(cfg, probe);
             load =
                 wall_load(P, sim.kernel(), prm, wall_particles_in(P, region.lo, region.hi), about);
         }

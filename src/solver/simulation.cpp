@@ -468,6 +468,11 @@ std::span<const WallContact<D>> Simulation<D>::wall_contacts() const {
 }
 
 template <int D>
+Real Simulation<D>::applied_pressure_floor() const {
+    return scheme_->applied_pressure_floor();
+}
+
+template <int D>
 void Simulation<D>::write_trace(const std::string& path) const {
     if (opts_.trace && trace_)
         trace_->write(comm_, path);

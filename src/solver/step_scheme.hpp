@@ -12,6 +12,7 @@
 #include "sluice/solver/step_units.hpp"
 #include "sluice/tasks/step_graph.hpp"
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -105,6 +106,11 @@ public:
     // Projection: the last step's wall collisions of this rank's fluid particles (none
     // otherwise: WCSPH's walls act through pair forces only).
     [[nodiscard]] virtual std::span<const WallContact<D>> wall_contacts() const { return {}; }
+    // The lowest pressure the scheme applies to the fluid, below which probes do not read
+    // (-infinity: WCSPH's fluid pairs apply every pressure, tension included).
+    [[nodiscard]] virtual Real applied_pressure_floor() const {
+        return -std::numeric_limits<Real>::infinity();
+    }
 };
 
 // What a Simulation lends its scheme, in units (docs/ARCHITECTURE.md, "Schemes"): a scheme's

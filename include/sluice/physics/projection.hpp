@@ -20,6 +20,7 @@
 #include "sluice/core/types.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace sluice {
 
@@ -67,6 +68,11 @@ enum class PressureLevel : std::uint8_t {
 };
 inline Real gradient_pressure(Real p, PressureLevel level = PressureLevel::surface) {
     return p > 0 || level == PressureLevel::free ? p : 0;
+}
+// The lowest pressure P7 applies, gradient_pressure's floor: what the probes read below
+// (-infinity: every pressure as it is).
+inline Real applied_pressure_floor(PressureLevel level) {
+    return level == PressureLevel::free ? -std::numeric_limits<Real>::infinity() : Real(0);
 }
 inline Real gradient_reference(Real current, Real p_neighbour,
                                PressureLevel level = PressureLevel::surface) {

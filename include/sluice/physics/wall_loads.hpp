@@ -175,8 +175,8 @@ struct WallContact {
 // that it does not depend on the order the contacts were recorded in (threads, ranks).
 // Returned counts: wall_particles = 0, pairs = contacts summed.
 template <int D>
-WallLoad contact_wall_load(std::vector<WallContact<D>> contacts, const Vec<D>& lo, const Vec<D>& hi,
-                           const Vec<D>& moment_point);
+WallLoad contact_wall_load(const std::vector<WallContact<D>>& contacts, const Vec<D>& lo,
+                           const Vec<D>& hi, const Vec<D>& moment_point);
 
 // The traction the contacts give the wall under an area sensor's face, per unit area. Each
 // contact's normal force (into the wall) is spread evenly over the part of the surface within
@@ -224,9 +224,9 @@ extern template WallLoad interpolated_wall_load<2>(const Particles<2>&, const An
 extern template WallLoad interpolated_wall_load<3>(const Particles<3>&, const AnyKernel<3>&,
                                                    const std::vector<WallPatch<3>>&, Real, Real,
                                                    const Vec<3>&);
-extern template WallLoad contact_wall_load<2>(std::vector<WallContact<2>>, const Vec<2>&,
+extern template WallLoad contact_wall_load<2>(const std::vector<WallContact<2>>&, const Vec<2>&,
                                               const Vec<2>&, const Vec<2>&);
-extern template WallLoad contact_wall_load<3>(std::vector<WallContact<3>>, const Vec<3>&,
+extern template WallLoad contact_wall_load<3>(const std::vector<WallContact<3>>&, const Vec<3>&,
                                               const Vec<3>&, const Vec<3>&);
 extern template Real contact_traction<2>(const std::vector<WallContact<2>>&, const SensorFace<2>&,
                                          Real, Real, Real);

@@ -166,6 +166,10 @@ public:
     // The last step's wall collisions of this rank's fluid particles (projection scheme; none
     // with WCSPH): what the force probes add to the interpolated pressure's load.
     [[nodiscard]] std::span<const WallContact<D>> wall_contacts() const;
+    // The lowest pressure the scheme applies to the fluid (the projection scheme under a free
+    // surface: 0, its correction applies no tension; otherwise -infinity): the probes read
+    // each particle's pressure above it.
+    [[nodiscard]] Real applied_pressure_floor() const;
 
     // Seconds spent in rebinning and re-decomposition between steps, summed over the run.
     [[nodiscard]] double rebin_seconds_total() const { return rebin_seconds_; }

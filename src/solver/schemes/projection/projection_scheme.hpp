@@ -2,6 +2,7 @@
 // The incompressible projection scheme (docs/PROJECTION.md): three step graphs per step,
 // their stage tables and bodies (projection_step.cpp) and the pressure solve between them
 // (projection_solver.cpp, block_preconditioner.cpp).
+#include "sluice/physics/projection.hpp"
 #include "sluice/solver/halo_fields.hpp"
 
 #include "../../step_scheme.hpp"
@@ -43,6 +44,11 @@ public:
     }
     [[nodiscard]] std::span<const WallContact<D>> wall_contacts() const override {
         return proj_->contacts;
+    }
+    // P7 applies max(p, 0) under a free surface; without one, every pressure.
+    [[nodiscard]] Real applied_pressure_floor() const override {
+        return sluice::applied_pressure_floor(proj_->free_level ? PressureLevel::free
+                                                                : PressureLevel::surface);
     }
 
 private:
