@@ -41,6 +41,9 @@ const std::vector<std::pair<std::string, CorrectionReference>> kCorrectionRefere
     {"minimum", CorrectionReference::minimum}, {"hydrostatic", CorrectionReference::hydrostatic}};
 const std::vector<std::pair<std::string, DeviationWeight>> kDeviationWeights = {
     {"pnu_mps", DeviationWeight::pnu_mps}, {"smooth", DeviationWeight::smooth}};
+const std::vector<std::pair<std::string, WallCollision>> kWallCollisions = {
+    {"line_of_centres", WallCollision::line_of_centres},
+    {"wall_normal", WallCollision::wall_normal}};
 const std::vector<std::pair<std::string, NeighbourPolicy>> kNeighbourPolicies = {
     {"radius", NeighbourPolicy::radius}, {"convex-hull", NeighbourPolicy::convex_hull}};
 const std::vector<std::pair<std::string, bool>> kHullPoints = {{"vertices", false},
@@ -169,6 +172,7 @@ void read_projection(const Section& s, CaseConfig& c) {
     p.correction_reference =
         s.choice("correction_reference", p.correction_reference, kCorrectionReferences);
     p.deviation_weight = s.choice("deviation_weight", p.deviation_weight, kDeviationWeights);
+    p.wall_collision = s.choice("wall_collision", p.wall_collision, kWallCollisions);
     p.fluid_collision = s.boolean("fluid_collision").value_or(p.fluid_collision);
     p.shifting = s.number("shifting", p.shifting);
 }

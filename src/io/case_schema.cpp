@@ -139,6 +139,8 @@ const KeySpec kKeys[] = {
      "Reference pressure of P7's stabilised gradient: \"hydrostatic\" (the smallest positive neighbour pressure less its hydrostatic difference from the particle, and wall pressures floored at the hydrostatic continuation of the particle's, so that a hydrostatic field is corrected exactly) or \"minimum\" (the smallest positive neighbour pressure, Koshizuka & Oka 1996; walls clamped at 0); docs/PROJECTION.md, P7."},
     {"projection", "deviation_weight", "string", "", "\"smooth\"", one_of({"smooth", "pnu_mps"}), Applies::projection, "",
      "Weight of the number density n_i in the density-deviation term of the source P3: \"smooth\" (the smooth weight w_s of the wall rows, which reads a disordered arrangement of the lattice's volume as uncompressed) or \"pnu_mps\" (the WMLS fits' weight, seed 004); docs/PROJECTION.md, P3."},
+    {"projection", "wall_collision", "string", "", "\"wall_normal\"", one_of({"wall_normal", "line_of_centres"}), Applies::projection, "",
+     "Direction in which a fluid particle that would come within 0.8 dx of a wall particle loses its velocity into the wall: \"wall_normal\" (along the wall's normal from its wall neighbours, so that flow along a wall is not braked) or \"line_of_centres\" (along the line to that wall particle, as before session 39); docs/PROJECTION.md, \"Wall collision\"."},
     {"projection", "fluid_collision", "boolean", "", "true", {}, Applies::projection, "",
      "Koshizuka-type collision of fluid pairs closer than 0.8 dx that approach (restitution 0.2, momentum-conserving; docs/PROJECTION.md, \"Collisions\")."},
     {"projection", "shifting", "number", "", "0", closed(0, 0.5), Applies::projection, "",

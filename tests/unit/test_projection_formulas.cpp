@@ -1,7 +1,9 @@
 // The projection scheme's formulas (include/sluice/physics/projection.hpp, docs/PROJECTION.md).
+#include "sluice/physics/ls_weight.hpp"
 #include "sluice/physics/projection.hpp"
 #include "sluice/physics/timestep.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <doctest/doctest.h>
@@ -132,6 +134,49 @@ TEST_CASE("collisions within the step: the distance the step would leave decides
     CHECK(v[0] == doctest::Approx(0));
     CHECK(v[1] == doctest::Approx(1));
     CHECK(wall_collision<2>(Vec<2>(-2, 1), wall, d, 1.0) == Vec<2>(-2, 1));
+}
+
+TEST_CASE("wall collision along the wall's normal keeps the flow along the wall") {
+    const Vec<2> up(0, 1); // a floor's normal, out of the wall
+    // Sliding forward and dipping towards the floor: only the dip is stopped.
+    CHECK(wall_normal_collision<2>(Vec<2>(3, -1), up) == Vec<2>(3, 0));
+    // Sliding or rising: untouched (a wall neither brakes nor holds a particle).
+    CHECK(wall_normal_collision<2>(Vec<2>(3, 0), up) == Vec<2>(3, 0));
+    CHECK(wall_normal_collision<2>(Vec<2>(3, 1), up) == Vec<2>(3, 1));
+    // The line of centres to the floor particle ahead and below takes forward speed as well:
+    // the friction the normal form removes.
+    const Vec<2> ahead(Real(0.006), Real(-0.005)); // x_wall - x_fluid
+    const Vec<2> old = wall_collision<2>(Vec<2>(3, -1), ahead, Real(0.008));
+    CHECK(old[0] < Real(2));
+    // A corner's bisector stops the part of the velocity that enters both walls.
+    const Vec<2> corner = Vec<2>(-1, 1).normalized(); // wall at x > 0 and floor at y < 0
+    const Vec<2> into = wall_normal_collision<2>(Vec<2>(2, 0), corner);
+    CHECK(into[0] == doctest::Approx(1));
+    CHECK(into[1] == doctest::Approx(1));
+}
+
+TEST_CASE("wall normal from the wall neighbours: the floor's normal anywhere above it") {
+    // A floor of three layers (y = -dx/2, -3dx/2, -5dx/2) on a lattice of spacing dx, the
+    // smooth weight with re = 3.1 dx; a fluid particle at height y0 and any position along it.
+    const Real dx = 0.01, re = Real(3.1) * dx;
+    Real worst = 0;
+    for (Real y0 : {Real(0.3) * dx, Real(0.5) * dx, Real(1.2) * dx})
+        for (int s = 0; s < 10; ++s) {
+            const Vec<2> x(Real(s) * dx / 10, y0);
+            Vec<2> sum = Vec<2>::Zero();
+            for (int i = -10; i <= 10; ++i)
+                for (int layer = 0; layer < 3; ++layer) {
+                    const Vec<2> w((Real(i) + Real(0.5)) * dx, -(Real(layer) + Real(0.5)) * dx);
+                    sum += ls_weight((x - w).norm(), re, LsWeight::smooth) * (x - w);
+                }
+            const Vec<2> n = wall_normal_at<2>(sum);
+            CHECK(n.norm() == doctest::Approx(1));
+            CHECK(n[1] > 0);
+            worst = std::max(worst, std::abs(n[0]));
+        }
+    MESSAGE("largest tilt of the floor's normal over sub-lattice positions: " << worst);
+    CHECK(worst < Real(0.002));
+    CHECK(wall_normal_at<2>(Vec<2>::Zero()) == Vec<2>::Zero());
 }
 
 TEST_CASE("time step of the incompressible scheme: flow speed, force and viscosity, no sound") {

@@ -15,9 +15,11 @@
 // contact_wall_load): the step's velocity update is explicit, so the force sampled after step k
 // acts for dt_k. Its operators are not antisymmetric (the fluid's internal forces need not
 // cancel) and the interpolated pressure is not the momentum the correction applies, so the
-// balance holds less tightly than WCSPH's. Measured (306 steps to 0.3 s, x-momentum +10 to
-// -0.14 kg m/s per m): the wall's impulse 9.85 N s/m, of which the collisions 1.54, is 2.9 %
-// short of the momentum change; the pressure alone would be 18 % short.
+// balance holds less tightly than WCSPH's. Measured (317 steps to 0.3 s, x-momentum +10 to
+// +0.15 kg m/s per m, the wall collision along the wall's normal): the wall's impulse 9.53 N s/m,
+// of which the collisions 1.23, is 3.2 % short of the momentum change; the pressure alone would
+// be 16 % short. (Along the line of centres, before session 39: 306 steps, 9.85 N s/m, of
+// which 1.54, 2.9 % short.)
 #include "sluice/io/case_reader.hpp"
 #include "sluice/solver/run.hpp"
 #include "sluice/solver/simulation.hpp"

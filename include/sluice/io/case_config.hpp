@@ -36,6 +36,8 @@ enum class CorrectionGradient { second_order, first_order };
 enum class CorrectionReference { minimum, hydrostatic };
 // Weight of the number density in the density-deviation source term (docs/PROJECTION.md, P3).
 enum class DeviationWeight { pnu_mps, smooth };
+// Direction of the projection scheme's wall collision (docs/PROJECTION.md, "Wall collision").
+enum class WallCollision { line_of_centres, wall_normal };
 enum class DensityScheme { summation, continuity };
 // How WCSPH dissipates: artificial viscosity + delta-SPH, or a Riemann solver per pair.
 enum class Dissipation { artificial, riemann };
@@ -135,6 +137,7 @@ struct ProjectionSettings {
     CorrectionGradient correction_gradient = CorrectionGradient::second_order;
     CorrectionReference correction_reference = CorrectionReference::hydrostatic;
     DeviationWeight deviation_weight = DeviationWeight::smooth;
+    WallCollision wall_collision = WallCollision::wall_normal;
     bool fluid_collision = true; // Koshizuka-type collision of fluid pairs closer than 0.8 dx
     double shifting = 0;         // Fickian shifting, D = A h^2 per step (0 = off; Lind et al. 2012)
 

@@ -145,6 +145,33 @@ Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance, Real
     return collides(r, approach, distance, dt) ? Vec<D>(v - approach * e) : v;
 }
 
+// The wall collision along the wall's normal (projection.wall_collision = "wall_normal", the
+// default since session 39; docs/PROJECTION.md, "Wall collision"). wall_collision acts along
+// the line of centres to one wall particle: a particle that slides along a floor and dips
+// towards the wall particle ahead of it loses forward speed as well, a friction no wall
+// exerts (on the Zhou dam break it took 24 N s per metre from the surge over 0.5-0.8 s, 8 % of
+// the push the reservoir wall gives it; WCSPH's floor took 2). When wall_collision would act on
+// a particle, the particle instead loses the part of its velocity that enters the wall along
+// the wall's normal n (pointing out of the wall) and keeps the rest:
+//   v' = v - min(0, v.n) n,
+// with n from its wall neighbours (wall_normal_at). At a corner n is the bisector, which
+// stops a particle running into the corner along either wall only in part; the line of
+// centres then backs it up for wall particles already within the distance (correct_stage).
+template <int D>
+Vec<D> wall_normal_collision(const Vec<D>& v, const Vec<D>& normal) {
+    const Real vn = v.dot(normal);
+    return vn < 0 ? Vec<D>(v - vn * normal) : v;
+}
+// The wall's normal at a fluid particle, out of the wall: from the weighted centre of its wall
+// neighbours towards it, weighted_sum = sum_w w(r_iw) (x_i - x_w) (on a flat wall the
+// neighbours' offsets along the wall cancel, so n is the wall's normal wherever the particle
+// sits on the lattice). Zero when the sum vanishes.
+template <int D>
+Vec<D> wall_normal_at(const Vec<D>& weighted_sum) {
+    const Real len = weighted_sum.norm();
+    return len > 0 ? Vec<D>(weighted_sum / len) : Vec<D>(Vec<D>::Zero());
+}
+
 // Fluid-fluid collision (Koshizuka et al. 1998's collision model, as used in MPS codes for
 // particles that the pressure fails to keep apart, e.g. at a splashing jet's tip where the
 // surface rows carry p = 0). A pair closer than `distance` that approaches exchanges the

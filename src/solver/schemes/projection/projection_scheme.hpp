@@ -59,6 +59,9 @@ private:
     void solver_stage(int stage, int group);
     void factor_block(int group); // block-Jacobi preconditioner of the group (after ppe_source)
     void correct_stage(int group);
+    Vec<D> collide_with_walls(std::uint32_t i, const NeighbourList<D>& list, std::uint32_t b,
+                              std::uint32_t e, Vec<D> v,
+                              std::vector<WallContact<D>>& contacts) const;
     std::string solve_pressure(std::string& error); // non-empty: did not converge
     // The groups' partial sums, then the ranks'; with `coarse`, the ranks' restricted vectors
     // are summed into it as well (in rank order, in the same message).

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <fmt/format.h>
+#include <limits>
 
 namespace sluice {
 
@@ -304,6 +305,64 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
         factor_block(group);
 }
 
+// The wall collision of fluid particle i after P7 (docs/PROJECTION.md, "Wall collision";
+// projection.hpp): its velocity after it; the momentum it gave the walls is recorded in
+// `contacts`, at the nearest wall particle it collided with.
+template <int D>
+Vec<D> ProjectionScheme<D>::collide_with_walls(std::uint32_t i, const NeighbourList<D>& list,
+                                               std::uint32_t b, std::uint32_t e, Vec<D> v,
+                                               std::vector<WallContact<D>>& contacts) const {
+    const ProjectionData<D>& d = *proj_;
+    const Real distance = d.collision_distance, dt = Real(clock_.dt);
+    const auto record = [&](std::uint32_t j, const Vec<D>& before) {
+        contacts.push_back({P_.id[i], P_.id[j], P_.x[j], P_.mass[i] * (before - v) / dt});
+    };
+    if (case_.cfg.projection.wall_collision == WallCollision::line_of_centres) {
+        // Along the line of centres to each wall particle in turn (before session 39).
+        for (std::uint32_t p = b; p < e; ++p) {
+            const std::uint32_t j = list.j[p];
+            if (P_.kind[j] != Kind::wall)
+                continue;
+            const Vec<D> before = v;
+            v = wall_collision<D>(v, pair_offset<D>(list, P_.x, i, p), distance, dt);
+            if (v != before)
+                record(j, before);
+        }
+        return v;
+    }
+    // The wall particles the step would bring within the distance (the nearest of them names
+    // the contact), and the wall's normal from all of them.
+    Vec<D> centre = Vec<D>::Zero();
+    Real nearest = std::numeric_limits<Real>::infinity();
+    std::uint32_t hit = 0;
+    for (std::uint32_t p = b; p < e; ++p) {
+        const std::uint32_t j = list.j[p];
+        if (P_.kind[j] != Kind::wall)
+            continue;
+        const Vec<D> off = pair_offset<D>(list, P_.x, i, p);
+        const Real r = off.norm();
+        centre -= ls_weight(r, d.re, LsWeight::smooth) * off;
+        // Equal distances (a lattice) name the smaller id, whatever the list's order.
+        const bool nearer = r < nearest || (r == nearest && P_.id[j] < P_.id[hit]);
+        if (nearer && wall_collision<D>(v, off, distance, dt) != v) {
+            nearest = r;
+            hit = j;
+        }
+    }
+    if (!std::isfinite(nearest))
+        return v;
+    const Vec<D> before = v;
+    v = wall_normal_collision<D>(v, wall_normal_at<D>(centre));
+    // Backstop, for corners: a wall particle already within the distance and still approached
+    // on the line of centres stops that approach.
+    for (std::uint32_t p = b; p < e; ++p)
+        if (P_.kind[list.j[p]] == Kind::wall)
+            v = wall_collision<D>(v, pair_offset<D>(list, P_.x, i, p), distance);
+    if (v != before)
+        record(hit, before);
+    return v;
+}
+
 // Stage "correct": velocity correction (P7) and position update (P8), state checks and the
 // time-step limits of the next step.
 template <int D>
@@ -372,18 +431,9 @@ void ProjectionScheme<D>::correct_stage(int group) {
                                             rho0 * gravity.dot(pair_offset<D>(list, P_.x, i, p)));
             grad += grad_coefficient[p] * (pj - p_ref);
         }
-        Vec<D> v = corrected_velocity<D>(d.u_star[i], grad, rho0, Real(clock_.dt));
-        const Real collision = d.collision_distance;
-        for (std::uint32_t p = list.offset[k]; p < list.offset[k + 1]; ++p) {
-            const std::uint32_t j = list.j[p];
-            if (P_.kind[j] != Kind::wall)
-                continue;
-            const Vec<D> before = v;
-            v = wall_collision<D>(v, pair_offset<D>(list, P_.x, i, p), collision, Real(clock_.dt));
-            if (v != before)
-                G.contacts.push_back(
-                    {P_.id[i], P_.id[j], P_.x[j], P_.mass[i] * (before - v) / Real(clock_.dt)});
-        }
+        Vec<D> v = collide_with_walls(
+            i, list, list.offset[k], list.offset[k + 1],
+            corrected_velocity<D>(d.u_star[i], grad, rho0, Real(clock_.dt)), G.contacts);
         Vec<D> x =
             projection_drift<D>(P_.x[i], v, Real(clock_.dt), case_.planes,
                                 Real(case_.cfg.restitution), shifting ? &P_.shift[i] : nullptr);
