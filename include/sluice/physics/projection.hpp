@@ -156,7 +156,8 @@ Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance, Real
 //   v' = v - min(0, v.n) n,
 // with n from its wall neighbours (wall_normal_at). At a corner n is the bisector, which
 // stops a particle running into the corner along either wall only in part; the line of
-// centres then backs it up for wall particles already within the distance (correct_stage).
+// centres then backs it up for wall particles already within the distance (the scheme's
+// collide_with_walls).
 template <int D>
 Vec<D> wall_normal_collision(const Vec<D>& v, const Vec<D>& normal) {
     const Real vn = v.dot(normal);
