@@ -23,7 +23,6 @@ three force probes sampled every step.
     perf/impact/momentum_balance.py RUN_DIR [RUN_DIR ...] [--projection] [--from T] [--to T]
 """
 import argparse
-import csv
 import glob
 import sys
 from pathlib import Path
@@ -31,24 +30,17 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-
-def force_series(run, name):
-    path = Path(run) / "probes" / f"{name}.csv"
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    data = np.array([[float(x) for x in r[:2]] for r in rows[1:]])
-    return data[:, 0], data[:, 1]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import analyse  # noqa: E402  (load_probe, cumulative_trapezoid)
 
 
 def cumulative_impulse(t, f, projection):
     """Impulse from the start to each sample time, as the scheme applies the sampled force."""
-    dt = np.diff(t)
-    if projection:
-        steps = f[1:] * dt  # the force sampled after step k acts over step k
-    else:
+    if not projection:
         # leap-frog: the force sampled at t_k acts half a step before and half after it
-        steps = 0.5 * (f[:-1] + f[1:]) * dt
-    return np.concatenate([[0.0], np.cumsum(steps)])
+        return analyse.cumulative_trapezoid(t, f)
+    # the force sampled after step k acts over step k
+    return np.concatenate([[0.0], np.cumsum(f[1:] * np.diff(t))])
 
 
 def fluid_momentum(snapshot):
@@ -76,7 +68,7 @@ def main():
             sys.exit(f"{run}: fewer than two snapshots in [{args.t_from}, {args.t_to}] s")
         impulses = {}
         for name in ("F_right_wall", "F_left_wall", "F_floor"):
-            t, f = force_series(run, name)
+            t, f = analyse.load_probe(Path(run) / "probes" / f"{name}.csv")
             impulses[name] = (t, cumulative_impulse(t, f, args.projection))
 
         def impulse(name, ta, tb):

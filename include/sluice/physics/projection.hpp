@@ -135,14 +135,21 @@ inline bool collides(Real r, Real approach, Real distance, Real dt) {
     return r > 0 && approach > 0 && r - dt * approach < distance;
 }
 
+// Whether a fluid particle moving at v collides with the wall particle `offset` away.
 template <int D>
-Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance, Real dt = 0) {
+bool wall_collides(const Vec<D>& v, const Vec<D>& offset, Real distance, Real dt = 0) {
     const Real r = offset.norm();
     if (r >= distance + dt * v.norm() || r == 0)
+        return false;
+    return collides(r, v.dot(offset / r), distance, dt);
+}
+
+template <int D>
+Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance, Real dt = 0) {
+    if (!wall_collides(v, offset, distance, dt))
         return v;
-    const Vec<D> e = offset / r;
-    const Real approach = v.dot(e);
-    return collides(r, approach, distance, dt) ? Vec<D>(v - approach * e) : v;
+    const Vec<D> e = offset / offset.norm();
+    return v - v.dot(e) * e;
 }
 
 // The wall collision along the wall's normal (projection.wall_collision = "wall_normal", the

@@ -330,9 +330,7 @@ Vec<D> ProjectionScheme<D>::collide_with_walls(std::uint32_t i, const NeighbourL
         }
         return v;
     }
-    // The wall particles the step would bring within the distance (the nearest of them names
-    // the contact), and the wall's normal from all of them.
-    Vec<D> centre = Vec<D>::Zero();
+    // The nearest wall particle the step would bring within the distance names the contact.
     Real nearest = std::numeric_limits<Real>::infinity();
     std::uint32_t hit = 0;
     for (std::uint32_t p = b; p < e; ++p) {
@@ -341,16 +339,22 @@ Vec<D> ProjectionScheme<D>::collide_with_walls(std::uint32_t i, const NeighbourL
             continue;
         const Vec<D> off = pair_offset<D>(list, P_.x, i, p);
         const Real r = off.norm();
-        centre -= ls_weight(r, d.re, LsWeight::smooth) * off;
         // Equal distances (a lattice) name the smaller id, whatever the list's order.
         const bool nearer = r < nearest || (r == nearest && P_.id[j] < P_.id[hit]);
-        if (nearer && wall_collision<D>(v, off, distance, dt) != v) {
+        if (nearer && wall_collides<D>(v, off, distance, dt)) {
             nearest = r;
             hit = j;
         }
     }
     if (!std::isfinite(nearest))
         return v;
+    // Only a colliding particle needs the wall's normal, from all its wall neighbours.
+    Vec<D> centre = Vec<D>::Zero();
+    for (std::uint32_t p = b; p < e; ++p)
+        if (P_.kind[list.j[p]] == Kind::wall) {
+            const Vec<D> off = pair_offset<D>(list, P_.x, i, p);
+            centre -= ls_weight(off.norm(), d.re, LsWeight::smooth) * off;
+        }
     const Vec<D> before = v;
     v = wall_normal_collision<D>(v, wall_normal_at<D>(centre));
     // Backstop, for corners: a wall particle already within the distance and still approached
