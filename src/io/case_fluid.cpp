@@ -26,6 +26,8 @@ const std::vector<std::pair<std::string, VelocityProfile>> kProfiles = {
     {"taylor_green", VelocityProfile::taylor_green},
     {"rotating", VelocityProfile::rotating},
     {"strain", VelocityProfile::strain}};
+const std::vector<std::pair<std::string, ParticleExit>> kParticleExits = {
+    {"stop", ParticleExit::stop}, {"remove", ParticleExit::remove}};
 const std::vector<std::pair<std::string, BlockShape>> kShapes = {{"box", BlockShape::box},
                                                                  {"ellipse", BlockShape::ellipse}};
 
@@ -108,6 +110,7 @@ void read_domain(const Section& s, CaseConfig& c) {
             c.periodic[a] = b->get();
         }
     }
+    c.particle_exit = s.choice("particle_exit", c.particle_exit, kParticleExits);
 }
 
 void read_fluid(const Section& s, CaseConfig& c) {

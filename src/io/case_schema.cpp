@@ -51,6 +51,8 @@ const KeySpec kKeys[] = {
      "Upper corner; above lo on every axis."},
     {"domain", "periodic", "array of dimension booleans", "", "all false", {}, Applies::any, "",
      "Axes that wrap around ([true, false]: periodic in x)."},
+    {"domain", "particle_exit", "string", "", "\"stop\"", one_of({"stop", "remove"}), Applies::any, "",
+     "A fluid particle leaving the domain: \"stop\" the run (exit code 3, last good snapshot) or \"remove\" it and count it (summary.json, the log)."},
     {"fluid", "rho0", "number", "kg/m³", "required", open_closed(0, 1e6).implausible_beyond(), Applies::any, "",
      "Reference density; > 0."},
     {"fluid", "viscosity", "number", "Pa·s", "required", closed(0, 1e6).implausible_beyond(), Applies::any, "",

@@ -160,6 +160,7 @@ void write_h5(const h5::World& w, const std::string& path, const CheckpointHeade
     real("limit_acoustic", s.limit_acoustic);
     real("limit_viscous", s.limit_viscous);
     real("limit_force", s.limit_force);
+    write_attribute(f, "fluid_removed", s.fluid_removed, H5T_NATIVE_INT64, H5T_STD_I64LE);
     real("out_next", c.output.out_next);
     real("last_output_time", c.output.last_output_time);
     real("wall_seconds", c.output.wall_seconds);
@@ -335,6 +336,10 @@ Checkpoint<D> read_h5(const h5::World& w, const std::string& path,
     s.limit_acoustic = real("limit_acoustic");
     s.limit_viscous = real("limit_viscous");
     s.limit_force = real("limit_force");
+    // Absent in checkpoints written before domain.particle_exit: nothing was removed.
+    s.fluid_removed = has_attribute(f, "fluid_removed")
+                          ? read_attribute<std::int64_t>(f, "fluid_removed", H5T_NATIVE_INT64)
+                          : 0;
     c.output.out_next = real("out_next");
     c.output.last_output_time = real("last_output_time");
     c.output.wall_seconds = real("wall_seconds");

@@ -35,6 +35,7 @@ nlohmann::json make_summary(const CaseConfig& cfg, const RunResult& r, int threa
     // Relative mass drift: zero for a conservative scheme, the first thing to look at.
     j["mass_relative_change"] =
         r.mass_initial != 0 ? (r.mass_final - r.mass_initial) / r.mass_initial : 0.0;
+    j["fluid_particles_removed"] = r.fluid_removed; // domain.particle_exit = "remove"
     j["extra"] = extra.is_null() ? nlohmann::json::object() : extra;
     return j;
 }

@@ -175,6 +175,9 @@ CaseInfo describe_case(const CaseConfig& cfg) {
             periodic += "xyz"[d];
     if (!periodic.empty())
         ph.push_back("periodic along: " + periodic);
+    ph.push_back(fmt::format("leaving the domain: a fluid particle {}",
+                             cfg.particle_exit == ParticleExit::remove ? "is removed and counted"
+                                                                       : "stops the run"));
     ph.push_back(cfg.fixed_dt ? fmt::format("time step: fixed {:.4g} s", *cfg.fixed_dt)
                               : std::string("time step: adaptive (CFL, viscous, force limits)"));
     info.geometry = geometry_lines(cfg, layers);

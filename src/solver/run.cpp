@@ -78,6 +78,31 @@ void log_solver_totals(const Simulation<D>& sim, RunLog& log) {
                  pt->relaxation_dropped, pt->solves);
 }
 
+// domain.particle_exit = "remove": the particles the last step removed, in the log (the first
+// removal on the console too). A run whose fluid has all left stops: nothing is left to run.
+template <int D>
+void report_removed(const Simulation<D>& sim, std::uint64_t fluid_at_start,
+                    std::int64_t removed_before, RunLog& log) {
+    const std::int64_t n = sim.removed_last_step();
+    if (n == 0)
+        return;
+    const std::int64_t total = sim.removed_particles();
+    const std::string line = fmt::format("step {}, t = {:.6g} s: {} fluid particles left the "
+                                         "domain and were removed ({} in the run)",
+                                         sim.steps(), sim.time(), n, total);
+    if (total - removed_before == n)
+        log.warn("{} (domain.particle_exit = \"remove\"; later removals go to the log file "
+                 "only)",
+                 line);
+    else
+        log.file_only(line);
+    if (static_cast<std::uint64_t>(total - removed_before) >= fluid_at_start)
+        throw RunError(fmt::format("every fluid particle has left the domain by step {}, t = "
+                                   "{:.6g} s (domain.particle_exit = \"remove\"): nothing is "
+                                   "left to simulate",
+                                   sim.steps(), sim.time()));
+}
+
 template <int D>
 RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     using Clock = std::chrono::steady_clock;
@@ -141,6 +166,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     figures.census_start = at_start.census;
     log_memory("after start-up");
     const std::uint64_t total_particles = result.particles;
+    const std::int64_t removed_before = sim.removed_particles(); // by earlier segments
 
     // Wall time of this segment's time loop so far; earlier segments' is start.wall_seconds
     // (from the checkpoint), so summary.json can report the whole run's.
@@ -175,6 +201,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
         }
         try {
             sim.step();
+            report_removed(sim, at_start.fluid, removed_before, log);
         } catch (const RunError& e) {
             // Every rank got the error from the same step; the state is the last good one
             // (the failing step never swapped its buffers in).
@@ -232,6 +259,12 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     log_memory("after the time loop");
     const RunTotals at_end = run_totals<D>(sim, figures.support);
     result.mass_final = at_end.mass;
+    result.fluid_removed = sim.removed_particles();
+    if (result.fluid_removed > 0)
+        log.info("{} fluid particles left the domain and were removed over the run "
+                 "(domain.particle_exit = \"remove\"; summary.json: fluid_particles_removed, "
+                 "and their mass is missing from mass_final)",
+                 result.fluid_removed);
     figures.census_end = at_end.census;
     log_memory("at the end");
     if (!opts.trace_path.empty())

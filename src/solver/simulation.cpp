@@ -3,6 +3,7 @@
 #include "sluice/io/errors.hpp"
 #include "sluice/solver/initial_share.hpp"
 #include "sluice/solver/initial_state.hpp"
+#include "sluice/solver/particle_exit.hpp"
 
 #include "schemes/projection/projection_scheme.hpp"
 #include "schemes/wcsph/wcsph_scheme.hpp"
@@ -19,6 +20,7 @@
 #include <fmt/format.h>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 namespace sluice {
 
@@ -126,6 +128,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     bounds_.max_speed = Real(cfg.max_speed);
     bounds_.min_density = Real(cfg.min_density);
     bounds_.max_density = Real(cfg.max_density);
+    bounds_.remove_outside = cfg.particle_exit == ParticleExit::remove;
     Vec<D> lo = domain_lo_, hi = domain_hi_;
     std::array<bool, D> periodic{};
     for (int d = 0; d < D; ++d) {
@@ -176,6 +179,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         clock_.dt_prev = st.dt_prev;
         clock_.u_max = Real(st.u_max);
         limits_ = TimeStepLimits{st.limit_acoustic, st.limit_viscous, st.limit_force};
+        removed_ = st.fluid_removed;
     }
 
     // Neighbour lists rely on fluid particles coming first in every cell (build_list): fluid
@@ -296,6 +300,13 @@ void Simulation<D>::rebuild() {
     // Between rebuilds the particles stay where the last sort put them (each within skin/2 of
     // where it was sorted), halo plans and groups stay, and no particle changes owner.
     P_.resize(owned_); // drop the halo copies: they are received afresh next step
+    if (leaving_agreed_ > 0) {
+        const auto removed = static_cast<std::int64_t>(remove_outside_domain(P_, bounds_));
+        if (removed != leaving_local_)
+            throw std::logic_error(fmt::format("rank {} removed {} particles outside the domain, "
+                                               "its drift counted {}",
+                                               comm_.rank(), removed, leaving_local_));
+    }
     if (comm_.parallel()) {
         const auto cut = balance_.due() != tasks::BalanceDue::no ? plan_rebalance() : std::nullopt;
         if (cut)
@@ -425,7 +436,12 @@ void Simulation<D>::between_steps() {
 
 template <int D>
 void Simulation<D>::change_layout() {
-    if (neighbours_.expire(disp2_max_)) {
+    // A particle that left the domain (domain.particle_exit = "remove") goes at a rebuild:
+    // every rank knows the global count from the step's agreement, so all rebuild together.
+    removed_last_step_ = leaving_agreed_;
+    removed_ += leaving_agreed_;
+    if (neighbours_.expire(disp2_max_) || leaving_agreed_ > 0) {
+        neighbours_.rebuilt = true;
         const auto t0 = std::chrono::steady_clock::now();
         const double t1 = tasks::clock_seconds();
         rebuild();
@@ -449,6 +465,7 @@ SolverState Simulation<D>::solver_state() const {
     s.limit_acoustic = limits_.acoustic;
     s.limit_viscous = limits_.viscous;
     s.limit_force = limits_.force;
+    s.fluid_removed = removed_;
     return s;
 }
 

@@ -37,12 +37,22 @@ void Simulation<D>::post_step_report(const std::string& task_error) {
             failed = failure_physical;
             rep.failure = f;
         }
+    std::int64_t leaving = 0;
+    for (std::int64_t n : results_.leaving)
+        leaving += n;
+    leaving_local_ = leaving;
     double busy = 0;
     for (const auto& r : graph_->task_records())
         busy += r.end - r.start;
-    rep.mine = StepReport{
-        lim.acoustic, lim.viscous, lim.force, speed,
-        disp2,        busy,        failed,    static_cast<std::int64_t>(requests_local_)};
+    rep.mine = StepReport{.acoustic = lim.acoustic,
+                          .viscous = lim.viscous,
+                          .force = lim.force,
+                          .speed = speed,
+                          .disp2 = disp2,
+                          .busy = busy,
+                          .failed = failed,
+                          .requests = static_cast<std::int64_t>(requests_local_),
+                          .leaving = leaving};
     requests_local_ = 0;
     rep.posted = tasks::clock_seconds();
     rep.gather = comm_.start_all_gather(std::span<const std::byte>(
@@ -69,7 +79,7 @@ Simulation<D>::reduce_reports(const std::vector<tasks::Bytes>& all) {
     TimeStepLimits global;
     Real global_speed = 0, global_disp2 = 0;
     StepFailed failed;
-    std::int64_t agreed = 0;
+    std::int64_t agreed = 0, leaving = 0;
     last_busy_.assign(all.size(), 0.0);
     for (std::size_t r = 0; r < all.size(); ++r) {
         StepReport o{};
@@ -79,6 +89,7 @@ Simulation<D>::reduce_reports(const std::vector<tasks::Bytes>& all) {
         global_disp2 = std::max(global_disp2, Real(o.disp2));
         last_busy_[r] = o.busy;
         agreed |= o.requests;
+        leaving += o.leaving;
         if (o.failed != failure_none && failed.rank < 0)
             failed = {static_cast<int>(r), o.failed};
     }
@@ -88,6 +99,7 @@ Simulation<D>::reduce_reports(const std::vector<tasks::Bytes>& all) {
     clock_.u_max = global_speed;
     disp2_max_ = global_disp2;
     requests_agreed_ = static_cast<unsigned>(agreed);
+    leaving_agreed_ = leaving;
     return failed;
 }
 
@@ -135,8 +147,9 @@ void Simulation<D>::run_ahead(double t_graph) {
         }
         advance_clock();
         balance_.add_step(clock_.steps, last_busy_);
-        const bool layout_changes =
-            neighbours_.expired(disp2_max_) || balance_.due() == tasks::BalanceDue::now;
+        // Particles that left the domain are removed by a rebuild.
+        const bool layout_changes = neighbours_.expired(disp2_max_) || leaving_agreed_ > 0 ||
+                                    balance_.due() == tasks::BalanceDue::now;
         outcome = requests_agreed_ != 0 || layout_changes ? Outcome::discard : Outcome::go;
         return outcome == Outcome::go ? Gate::open : Gate::skip;
     };

@@ -50,6 +50,15 @@ check_case dam_break_2d dam_break_2d.toml --set particles.dx=0.02 --set time.end
 # Every probe kind (point and area pressure, forces and moments on faces, a panel and an
 # obstacle, a level, fronts along x and y), sampled every step where the particles are.
 check_case probe_kinds_2d tests/data/probe_kinds_2d.toml --set runtime.rebalance_every=20
+# Particles leaving the domain and removed (domain.particle_exit = "remove"): a block falls out
+# of a wall-less domain row by row until 20 of its 200 particles are left; each removal forces
+# a rebuild on every rank in the same step.
+check_case free_fall_exit tests/data/free_fall_exit.toml --set 'domain.particle_exit="remove"' \
+    --set time.end_time=0.345 --set runtime.rebalance_every=20
+for layout in 1x1 2x1 3x1; do
+    grep -q '"fluid_particles_removed": 180' "$work/free_fall_exit/$layout/summary.json" ||
+        { echo "FAIL free_fall_exit: $layout did not remove 180 particles"; exit 1; }
+done
 check_case dam_break_3d dam_break_3d.toml --set time.end_time=0.02 \
     --set time.output_interval=0.005 --set runtime.rebalance_every=15 \
     --set 'runtime.initial_decomposition="key-range"'

@@ -38,6 +38,8 @@ enum class CorrectionReference { minimum, hydrostatic };
 enum class DeviationWeight { pnu_mps, smooth };
 // Direction of the projection scheme's wall collision (docs/PROJECTION.md, "Wall collision").
 enum class WallCollision { line_of_centres, wall_normal };
+// What becomes of a fluid particle that leaves the domain (domain.particle_exit).
+enum class ParticleExit { stop, remove };
 enum class DensityScheme { summation, continuity };
 // How WCSPH dissipates: artificial viscosity + delta-SPH, or a Riemann solver per pair.
 enum class Dissipation { artificial, riemann };
@@ -153,6 +155,9 @@ struct CaseConfig {
     // [domain]: the box particles may occupy; periodic axes wrap.
     Triple domain_lo{}, domain_hi{};
     std::array<bool, 3> periodic{false, false, false};
+    // A fluid particle outside the box (a non-periodic axis): the run stops (exit code 3), or
+    // the particle is removed and counted (spray thrown over an open top or a wall).
+    ParticleExit particle_exit = ParticleExit::stop;
 
     // [fluid]
     double rho0 = 1000;          // reference density [kg/m^3]

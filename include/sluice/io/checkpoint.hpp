@@ -42,6 +42,7 @@ struct SolverState {
     double dt_prev = 0; // the last step's: the leap-frog kick uses (dt_prev + dt) / 2
     double u_max = 0;   // largest fluid speed of the last step (scale of particle shifting)
     double limit_acoustic = 0, limit_viscous = 0, limit_force = 0; // last step's limits
+    std::int64_t fluid_removed = 0; // fluid particles that left the domain and were removed
 };
 
 // The driver's output schedule and what it has written so far.

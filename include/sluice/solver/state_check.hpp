@@ -17,7 +17,19 @@ struct StateBounds {
     std::array<bool, D> periodic{};        // axes without bounds
     Real max_speed = 0;                    // [m/s]
     Real min_density = 0, max_density = 0; // [kg/m^3]
+    // domain.particle_exit = "remove": a particle outside the box is healthy; the step counts
+    // it (outside_domain) and the next rebuild removes it.
+    bool remove_outside = false;
 };
+
+// Whether x lies outside the box along a non-periodic axis.
+template <int D>
+[[nodiscard]] inline bool outside_domain(const StateBounds<D>& b, const Vec<D>& x) {
+    for (int d = 0; d < D; ++d)
+        if (!b.periodic[static_cast<std::size_t>(d)] && (x[d] < b.lo[d] || x[d] > b.hi[d]))
+            return true;
+    return false;
+}
 
 // Whether the state passes every test of state_fault below (the hot path of a step's drift:
 // only an unhealthy particle pays for the message).
@@ -26,9 +38,8 @@ template <int D>
                                         Real rho) {
     if (!x.allFinite() || !v.allFinite() || !std::isfinite(rho))
         return false;
-    for (int d = 0; d < D; ++d)
-        if (!b.periodic[static_cast<std::size_t>(d)] && (x[d] < b.lo[d] || x[d] > b.hi[d]))
-            return false;
+    if (!b.remove_outside && outside_domain(b, x))
+        return false;
     return rho > 0 && rho >= b.min_density && rho <= b.max_density && !(v.norm() > b.max_speed);
 }
 
@@ -42,9 +53,9 @@ std::string state_fault(const StateBounds<D>& b, const Vec<D>& x, const Vec<D>& 
         return "a non-finite velocity";
     if (!std::isfinite(rho))
         return "a non-finite density";
-    for (int d = 0; d < D; ++d)
-        if (!b.periodic[static_cast<std::size_t>(d)] && (x[d] < b.lo[d] || x[d] > b.hi[d]))
-            return "a position outside the domain";
+    if (!b.remove_outside && outside_domain(b, x))
+        return "a position outside the domain (domain.particle_exit = \"remove\" drops such "
+               "particles)";
     if (rho <= 0)
         return fmt::format("a non-positive density {:.6g} kg/m^3", rho);
     if (rho < b.min_density || rho > b.max_density)

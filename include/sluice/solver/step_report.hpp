@@ -15,6 +15,7 @@ struct StepReport {
     double busy = 0;                             // task seconds of the step (the balancer)
     std::int64_t failed = 0;                     // StepFailure
     std::int64_t requests = 0;                   // StepRequest flags
+    std::int64_t leaving = 0;                    // fluid particles outside the domain (removed)
 };
 
 enum StepFailure : std::int64_t { failure_none = 0, failure_physical = 1, failure_internal = 2 };

@@ -6,6 +6,7 @@
 #include "sluice/physics/timestep.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,12 +29,14 @@ struct GroupResults {
     std::vector<std::string> failure;   // the first unhealthy particle's message, or empty
     std::vector<Real> speed;            // largest fluid speed (shifting's velocity scale)
     std::vector<Real> disp2;            // largest squared displacement from x_ref (Verlet)
+    std::vector<std::int64_t> leaving;  // fluid particles that left the domain (to be removed)
 
     void assign(std::size_t groups) {
         limits.assign(groups, {});
         failure.assign(groups, {});
         speed.assign(groups, 0.0);
         disp2.assign(groups, 0.0);
+        leaving.assign(groups, 0);
     }
 };
 

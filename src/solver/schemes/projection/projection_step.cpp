@@ -383,6 +383,7 @@ void ProjectionScheme<D>::correct_stage(int group) {
     const auto hi = static_cast<std::uint32_t>(list.first + list.offset.size() - 1);
     TimeStepLimits lim;
     Real speed = 0;
+    std::int64_t leaving = 0;
     std::string failure;
     const Real g_norm = case_.momentum.gravity.norm();
     const PressureLevel level = d.free_level ? PressureLevel::free : PressureLevel::surface;
@@ -452,6 +453,8 @@ void ProjectionScheme<D>::correct_stage(int group) {
                   particle_time_step(case_.time_step, cfl_sound_speed(true, case_.cfg.sound_speed),
                                      v.norm(), std::max(P_.a[i].norm(), g_norm)));
         speed = std::max(speed, v.norm());
+        if (case_.bounds.remove_outside && outside_domain(case_.bounds, x))
+            ++leaving;
         if (failure.empty()) {
             const std::string what = state_fault(case_.bounds, x, v, P_.rho[i]);
             if (!what.empty())
@@ -464,6 +467,7 @@ void ProjectionScheme<D>::correct_stage(int group) {
     }
     results_.limits[gi] = lim;
     results_.speed[gi] = speed;
+    results_.leaving[gi] = leaving;
     results_.failure[gi] = std::move(failure);
 }
 

@@ -248,6 +248,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         TimeStepExtremes extremes;
         const Real dt = Real(clock_.dt);
         Real speed = 0, disp2 = 0;
+        std::int64_t leaving = 0;
         std::string failure;
         for (CellIndex c : cells) {
             if (riemann_dissipation_)
@@ -279,6 +280,8 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                 extremes.add(case_.eos.sound_speed(rho), v_norm, P_.a[i].squaredNorm());
                 speed = std::max(speed, v_norm);
                 disp2 = std::max(disp2, (x - P_.x_ref[i]).squaredNorm());
+                if (case_.bounds.remove_outside && outside_domain(case_.bounds, x))
+                    ++leaving;
                 if (failure.empty() && !state_healthy(case_.bounds, x, v, rho)) {
                     const std::string what = state_fault(case_.bounds, x, v, rho);
                     if (!what.empty())
@@ -294,6 +297,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         results_.limits[static_cast<std::size_t>(group)] = extremes.limits(case_.time_step);
         results_.speed[static_cast<std::size_t>(group)] = speed;
         results_.disp2[static_cast<std::size_t>(group)] = disp2;
+        results_.leaving[static_cast<std::size_t>(group)] = leaving;
         results_.failure[static_cast<std::size_t>(group)] = std::move(failure);
         break;
     }
