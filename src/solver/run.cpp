@@ -87,9 +87,10 @@ void report_removed(const Simulation<D>& sim, std::uint64_t fluid_at_start,
     if (n == 0)
         return;
     const std::int64_t total = sim.removed_particles();
-    const std::string line = fmt::format("step {}, t = {:.6g} s: {} fluid particles left the "
-                                         "domain and were removed ({} in the run)",
-                                         sim.steps(), sim.time(), n, total);
+    const std::string line =
+        fmt::format("step {}, t = {:.6g} s: {} fluid particle{} left the domain and {} removed "
+                    "({} in the run)",
+                    sim.steps(), sim.time(), n, n == 1 ? "" : "s", n == 1 ? "was" : "were", total);
     if (total - removed_before == n)
         log.warn("{} (domain.particle_exit = \"remove\"; later removals go to the log file "
                  "only)",
