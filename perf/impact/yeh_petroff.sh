@@ -8,7 +8,9 @@
 #   --projection  the projection scheme (the case without its WCSPH-only keys; the column's
 #           force probe integrates the interpolated pressure over the column's faces).
 # Cost on the 2-core development machine: dx = 0.02 m dry, 0.9 s: ~6 min on 1 thread;
-# dx = 0.01 m with the wet bed (224k particles), 0.75 s: 25 min on 2 threads (session 34).
+# dx = 0.01 m with the wet bed (224k particles), 0.75 s: 25 min on 2 threads (session 34);
+# --projection --dry: dx = 0.015 m, 0.9 s: 28 min on 1 thread; dx = 0.01 m, 0.8 s: 61 min on 2
+# threads (session 40).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -24,7 +26,7 @@ while (($#)); do
     --out) out=$2; shift 2 ;;
     --sluice) sluice=$2; shift 2 ;;
     --set) sets+=(--set "$2"); shift 2 ;;
-    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
     *) echo "yeh_petroff.sh: unknown argument $1" >&2; exit 2 ;;
     esac
 done
