@@ -438,10 +438,8 @@ template <int D>
 void Simulation<D>::change_layout() {
     // A particle that left the domain (domain.particle_exit = "remove") goes at a rebuild:
     // every rank knows the global count from the step's agreement, so all rebuild together.
-    removed_last_step_ = leaving_agreed_;
     removed_ += leaving_agreed_;
-    if (neighbours_.expire(disp2_max_) || leaving_agreed_ > 0) {
-        neighbours_.rebuilt = true;
+    if (neighbours_.expire(disp2_max_, leaving_agreed_ > 0)) {
         const auto t0 = std::chrono::steady_clock::now();
         const double t1 = tasks::clock_seconds();
         rebuild();

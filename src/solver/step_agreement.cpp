@@ -148,7 +148,7 @@ void Simulation<D>::run_ahead(double t_graph) {
         advance_clock();
         balance_.add_step(clock_.steps, last_busy_);
         // Particles that left the domain are removed by a rebuild.
-        const bool layout_changes = neighbours_.expired(disp2_max_) || leaving_agreed_ > 0 ||
+        const bool layout_changes = neighbours_.expired(disp2_max_, leaving_agreed_ > 0) ||
                                     balance_.due() == tasks::BalanceDue::now;
         outcome = requests_agreed_ != 0 || layout_changes ? Outcome::discard : Outcome::go;
         return outcome == Outcome::go ? Gate::open : Gate::skip;

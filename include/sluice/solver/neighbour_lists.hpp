@@ -32,14 +32,15 @@ struct NeighbourLists {
             ++rebuilds;
     }
     // After a step, given the largest squared displacement of any particle (all ranks) from
-    // the positions of the last rebuild: whether the lists are rebuilt before the next step.
-    // They stay valid while every particle is within skin/2 of where they were built.
-    bool expire(Real disp2_max) {
-        rebuilt = expired(disp2_max);
+    // the positions of the last rebuild and whether particles are to be removed (all ranks):
+    // whether the lists are rebuilt before the next step. They stay valid while every particle
+    // is within skin/2 of where they were built and none leaves the set.
+    bool expire(Real disp2_max, bool removals) {
+        rebuilt = expired(disp2_max, removals);
         return rebuilt;
     }
-    [[nodiscard]] bool expired(Real disp2_max) const {
-        return skin <= 0 || disp2_max > 0.25 * skin * skin;
+    [[nodiscard]] bool expired(Real disp2_max, bool removals) const {
+        return removals || skin <= 0 || disp2_max > 0.25 * skin * skin;
     }
 };
 

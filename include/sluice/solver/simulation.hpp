@@ -114,7 +114,7 @@ public:
     [[nodiscard]] unsigned agreed_requests() const { return requests_agreed_; }
     // domain.particle_exit = "remove": fluid particles removed after the last step, and in the
     // whole run (over every rank, the same on each; a restart carries the total on).
-    [[nodiscard]] std::int64_t removed_last_step() const { return removed_last_step_; }
+    [[nodiscard]] std::int64_t removed_last_step() const { return leaving_agreed_; }
     [[nodiscard]] std::int64_t removed_particles() const { return removed_; }
 
     [[nodiscard]] double time() const { return clock_.time; }
@@ -269,7 +269,7 @@ private:
     // domain.particle_exit = "remove": fluid particles outside the domain after the last step
     // (every rank's, agreed), removed at the rebuild that follows; and the run's total.
     std::int64_t leaving_local_ = 0; // this rank's share of leaving_agreed_
-    std::int64_t leaving_agreed_ = 0, removed_last_step_ = 0, removed_ = 0;
+    std::int64_t leaving_agreed_ = 0, removed_ = 0;
     std::optional<PendingStepReport> report_; // between post_step_report and agree_on_step
     bool run_ahead_allowed_ = false;
     bool ran_ahead_ = false;  // the next step's graph has run (its agreement is to come)
