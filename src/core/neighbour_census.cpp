@@ -2,6 +2,9 @@
 
 #include "sluice/core/neighbourhood.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <span>
 #include <utility>
 #include <vector>
@@ -9,13 +12,14 @@
 namespace sluice {
 
 template <int D>
-NeighbourCensus count_neighbours(const CellGrid<D>& grid, const Particles<D>& P, Real support) {
-    return count_neighbours<D>(grid, P.x, P.kind, support, [](MortonKey) { return true; });
+NeighbourCensus count_neighbours(const CellGrid<D>& grid, const Particles<D>& P, Real support,
+                                 Real crowded) {
+    return count_neighbours<D>(grid, P.x, P.kind, support, crowded, [](MortonKey) { return true; });
 }
 
 template <int D>
 NeighbourCensus count_neighbours(const CellGrid<D>& grid, std::span<const Vec<D>> x,
-                                 std::span<const Kind> kind, Real support,
+                                 std::span<const Kind> kind, Real support, Real crowded,
                                  const std::function<bool(MortonKey)>& counted) {
     // Positions and kinds sorted by cell (a counting sort; the order inside a cell does not
     // change a count): 21-29 bytes per particle, not a copy of every field.
@@ -55,24 +59,39 @@ NeighbourCensus count_neighbours(const CellGrid<D>& grid, std::span<const Vec<D>
             const bool i_fluid = ks[i] == Kind::fluid;
             (i_fluid ? census.fluid : census.wall) += 1;
             std::uint64_t to_fluid = 0, to_wall = 0;
-            nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>&, Real) {
-                if (j != i)
-                    (ks[j] == Kind::fluid ? to_fluid : to_wall) += 1;
+            Real nearest_fluid2 = std::numeric_limits<Real>::infinity();
+            nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>&, Real r2) {
+                if (j == i)
+                    return;
+                const bool j_fluid = ks[j] == Kind::fluid;
+                (j_fluid ? to_fluid : to_wall) += 1;
+                if (j_fluid)
+                    nearest_fluid2 = std::min(nearest_fluid2, r2);
             });
             (i_fluid ? census.fluid_fluid : census.wall_fluid) += to_fluid;
             (i_fluid ? census.fluid_wall : census.wall_wall) += to_wall;
+            if (!i_fluid)
+                continue;
+            if (to_fluid == 0) {
+                ++census.fluid_isolated;
+                continue;
+            }
+            const Real nearest = std::sqrt(nearest_fluid2);
+            census.closest_fluid_pair = std::min(census.closest_fluid_pair, nearest);
+            if (nearest < crowded)
+                ++census.fluid_crowded;
         }
     }
     return census;
 }
 
-template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, const Particles<2>&, Real);
-template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, const Particles<3>&, Real);
+template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, const Particles<2>&, Real, Real);
+template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, const Particles<3>&, Real, Real);
 template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, std::span<const Vec<2>>,
-                                             std::span<const Kind>, Real,
+                                             std::span<const Kind>, Real, Real,
                                              const std::function<bool(MortonKey)>&);
 template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, std::span<const Vec<3>>,
-                                             std::span<const Kind>, Real,
+                                             std::span<const Kind>, Real, Real,
                                              const std::function<bool(MortonKey)>&);
 
 } // namespace sluice

@@ -156,11 +156,12 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     // per stage.
     RunFigures figures;
     figures.support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+    figures.crowded = Real(0.5) * cfg.dx;
     figures.start_step = start_step;
     figures.resumed = resumed;
     figures.earlier_wall_seconds = start.wall_seconds;
     figures.threads = threads;
-    const RunTotals at_start = run_totals<D>(sim, figures.support);
+    const RunTotals at_start = run_totals<D>(sim, figures.support, figures.crowded);
     result.particles = at_start.particles;
     result.fluid_particles = at_start.fluid;
     result.mass_initial = at_start.mass;
@@ -207,9 +208,15 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             // Every rank got the error from the same step; the state is the last good one
             // (the failing step never swapped its buffers in).
             const std::string where = outputs.last_snapshot(sim, "last good state");
+            // Crowded particles are where violent runs blow up (docs/IMPACT_LOADS.md,
+            // "Particle spacing"): the last good state's spacing goes with the message.
+            const std::string spacing = fmt::format(
+                "; at the last good state {}",
+                spacing_sentence(run_totals<D>(sim, figures.support, figures.crowded).census,
+                                 cfg.dx));
             progress.finish();
-            log.file_only(fmt::format("the run failed: {}{}", e.what(), where));
-            throw RunError(std::string(e.what()) + where);
+            log.file_only(fmt::format("the run failed: {}{}{}", e.what(), where, spacing));
+            throw RunError(std::string(e.what()) + where + spacing);
         } catch (const InternalError& e) {
             const std::string where = outputs.last_snapshot(sim, "state before the failing step");
             progress.finish();
@@ -258,7 +265,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                                        static_cast<double>(result.steps - start_step) /
                                        result.wall_seconds;
     log_memory("after the time loop");
-    const RunTotals at_end = run_totals<D>(sim, figures.support);
+    const RunTotals at_end = run_totals<D>(sim, figures.support, figures.crowded);
     result.mass_final = at_end.mass;
     result.fluid_removed = sim.removed_particles();
     if (result.fluid_removed > 0)
@@ -267,6 +274,14 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                  "and their mass is missing from mass_final)",
                  result.fluid_removed);
     figures.census_end = at_end.census;
+    {
+        const std::string spacing =
+            fmt::format("fluid spacing at the end: {}", spacing_sentence(at_end.census, cfg.dx));
+        if (crowded_warning(at_end.census))
+            log.warn("{} (docs/IMPACT_LOADS.md, \"Particle spacing\")", spacing);
+        else
+            log.info("{}", spacing);
+    }
     log_memory("at the end");
     if (!opts.trace_path.empty())
         sim.write_trace(opts.trace_path);

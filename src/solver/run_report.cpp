@@ -4,6 +4,7 @@
 #include "sluice/io/summary.hpp"
 #include "sluice/tasks/comm.hpp"
 
+#include <cmath>
 #include <cstring>
 #include <span>
 
@@ -12,9 +13,32 @@
 namespace sluice {
 
 nlohmann::json census_json(const NeighbourCensus& n) {
-    return {{"fluid_particles", n.fluid},   {"wall_particles", n.wall},
-            {"fluid_fluid", n.fluid_fluid}, {"fluid_wall", n.fluid_wall},
-            {"wall_fluid", n.wall_fluid},   {"wall_wall", n.wall_wall}};
+    nlohmann::json j = {{"fluid_particles", n.fluid},       {"wall_particles", n.wall},
+                        {"fluid_fluid", n.fluid_fluid},     {"fluid_wall", n.fluid_wall},
+                        {"wall_fluid", n.wall_fluid},       {"wall_wall", n.wall_wall},
+                        {"fluid_crowded", n.fluid_crowded}, {"fluid_isolated", n.fluid_isolated}};
+    // null where there is no fluid pair at all (JSON has no infinity)
+    j["closest_fluid_pair"] = std::isfinite(n.closest_fluid_pair)
+                                  ? nlohmann::json(n.closest_fluid_pair)
+                                  : nlohmann::json(nullptr);
+    return j;
+}
+
+std::string spacing_sentence(const NeighbourCensus& n, Real dx) {
+    std::string s = fmt::format(
+        "{} of {} fluid particles ({:.2g} %) have a fluid neighbour closer than dx/2",
+        n.fluid_crowded, n.fluid,
+        n.fluid > 0 ? 100.0 * static_cast<double>(n.fluid_crowded) / static_cast<double>(n.fluid)
+                    : 0.0);
+    if (std::isfinite(n.closest_fluid_pair))
+        s += fmt::format(", the closest pair is {:.3g} dx apart", n.closest_fluid_pair / dx);
+    if (n.fluid_isolated > 0)
+        s += fmt::format(", {} have no fluid neighbour", n.fluid_isolated);
+    return s;
+}
+
+bool crowded_warning(const NeighbourCensus& n) {
+    return n.fluid_crowded * 100 >= n.fluid && n.fluid_crowded > 0;
 }
 
 // Per-rank profile as a flat list of numbers (same layout on every rank).
@@ -147,6 +171,7 @@ void write_run_summary(const Simulation<D>& sim, const CaseConfig& cfg, const st
     extra["wall_seconds_all_segments"] = f.earlier_wall_seconds + result.wall_seconds;
     extra["parallel"] = parallel;
     extra["neighbours"] = {{"support", f.support},
+                           {"crowded_below", f.crowded},
                            {"start", census_json(f.census_start)},
                            {"end", census_json(f.census_end)}};
     nlohmann::json rebal = nlohmann::json::array();

@@ -15,6 +15,14 @@ namespace sluice {
 
 nlohmann::json census_json(const NeighbourCensus& n);
 
+// One sentence on the fluid's spacing for the log and a failure message: how many fluid
+// particles crowd a fluid neighbour (closer than dx/2), the closest pair in dx, and how many
+// are alone.
+std::string spacing_sentence(const NeighbourCensus& n, Real dx);
+
+// Whether the spacing is worth a warning: at least 1 % of the fluid crowded.
+bool crowded_warning(const NeighbourCensus& n);
+
 // Per-rank profile as a flat list of numbers (same layout on every rank).
 template <int D>
 std::vector<double> profile_numbers(const Simulation<D>& sim);
@@ -25,9 +33,11 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
                                const std::vector<std::vector<double>>& per_rank, bool print);
 
 // What summary.json reports beyond the Simulation and the RunResult: the neighbour census at
-// the start and the end (over `support`), and the segment's place in a restarted run.
+// the start and the end (over `support`; fluid particles closer than `crowded` to a fluid
+// neighbour count as crowded), and the segment's place in a restarted run.
 struct RunFigures {
     Real support = 0;
+    Real crowded = 0; // half the initial spacing [m]
     NeighbourCensus census_start, census_end;
     long start_step = 0;             // the step this segment started from
     bool resumed = false;            // a restart

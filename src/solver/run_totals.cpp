@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -10,12 +11,12 @@ namespace sluice {
 
 namespace {
 
-constexpr std::size_t kCounters = 8;
+constexpr std::size_t kCounters = 10;
 
 std::array<std::uint64_t, kCounters> counters(const RunTotals& t) {
     const NeighbourCensus& c = t.census;
-    return {t.particles,   t.fluid,      c.fluid,      c.wall,
-            c.fluid_fluid, c.fluid_wall, c.wall_fluid, c.wall_wall};
+    return {t.particles,  t.fluid,      c.fluid,     c.wall,          c.fluid_fluid,
+            c.fluid_wall, c.wall_fluid, c.wall_wall, c.fluid_crowded, c.fluid_isolated};
 }
 
 void set_counters(RunTotals& t, const std::array<std::uint64_t, kCounters>& v) {
@@ -28,12 +29,14 @@ void set_counters(RunTotals& t, const std::array<std::uint64_t, kCounters>& v) {
     c.fluid_wall = v[5];
     c.wall_fluid = v[6];
     c.wall_wall = v[7];
+    c.fluid_crowded = v[8];
+    c.fluid_isolated = v[9];
 }
 
 } // namespace
 
 template <int D>
-RunTotals run_totals(const Simulation<D>& sim, Real support) {
+RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded) {
     const tasks::Comm& comm = sim.comm();
     const Particles<D>& P = sim.particles();
     const std::size_t n = sim.owned();
@@ -49,7 +52,7 @@ RunTotals run_totals(const Simulation<D>& sim, Real support) {
     if (!comm.parallel()) {
         t.mass = sum_in_id_order(std::move(masses));
         t.census = count_neighbours<D>(grid, std::span<const Vec<D>>(P.x.data(), n),
-                                       std::span<const Kind>(P.kind.data(), n), support,
+                                       std::span<const Kind>(P.kind.data(), n), support, crowded,
                                        [](MortonKey) { return true; });
         return t;
     }
@@ -110,23 +113,29 @@ RunTotals run_totals(const Simulation<D>& sim, Real support) {
         }
     }
     in = {};
-    t.census = count_neighbours<D>(grid, x, kind, support,
+    t.census = count_neighbours<D>(grid, x, kind, support, crowded,
                                    [&](MortonKey key) { return layout.rank_of(key) == me; });
 
-    // Every rank's counts, added (integers: exact in any order).
-    const auto v = counters(t);
+    // Every rank's counts, added (integers: exact in any order), and the smallest of the
+    // ranks' closest fluid pairs.
+    tasks::Bytes report;
+    for (const std::uint64_t c : counters(t))
+        tasks::put(report, c);
+    tasks::put(report, t.census.closest_fluid_pair);
     std::array<std::uint64_t, kCounters> sum{};
-    for (const auto& b : comm.all_gather(
-             std::span<const std::byte>(reinterpret_cast<const std::byte*>(v.data()), sizeof(v)))) {
+    Real closest = std::numeric_limits<Real>::infinity();
+    for (const auto& b : comm.all_gather(report)) {
         std::size_t pos = 0;
         for (auto& s : sum)
             s += tasks::take<std::uint64_t>(b, pos);
+        closest = std::min(closest, tasks::take<Real>(b, pos));
     }
     set_counters(t, sum);
+    t.census.closest_fluid_pair = closest;
     return t;
 }
 
-template RunTotals run_totals<2>(const Simulation<2>&, Real);
-template RunTotals run_totals<3>(const Simulation<3>&, Real);
+template RunTotals run_totals<2>(const Simulation<2>&, Real, Real);
+template RunTotals run_totals<3>(const Simulation<3>&, Real, Real);
 
 } // namespace sluice

@@ -12,18 +12,19 @@ namespace sluice {
 struct RunTotals {
     std::uint64_t particles = 0, fluid = 0; // every rank's owned particles together
     Real mass = 0;                          // fluid mass in id order: rank 0 only
-    NeighbourCensus census;                 // pairs within `support`, every rank's together
+    NeighbourCensus census; // pairs within `support` and fluid spacing, every rank's together
 };
 
 // Collective. Counts and census on every rank; the mass on rank 0 (which receives 16 bytes per
 // fluid particle: the ids and masses that Particles::total_mass sums, in its order, so the
 // figure has the same bits on any layout). The census: each rank counts the particles in the
 // cells it owns, by their current positions, with neighbours from the adjacent cells, which
-// every rank sends the owners of those cells; the integer counts add up exactly.
+// every rank sends the owners of those cells; the integer counts add up exactly, and the
+// closest fluid pair is the smallest of the ranks'. `crowded`: see count_neighbours.
 template <int D>
-RunTotals run_totals(const Simulation<D>& sim, Real support);
+RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded);
 
-extern template RunTotals run_totals<2>(const Simulation<2>&, Real);
-extern template RunTotals run_totals<3>(const Simulation<3>&, Real);
+extern template RunTotals run_totals<2>(const Simulation<2>&, Real, Real);
+extern template RunTotals run_totals<3>(const Simulation<3>&, Real, Real);
 
 } // namespace sluice

@@ -3,7 +3,8 @@
 # (tests/data/free_fall_exit.toml): no pressure acts in it, so row k (initial height
 # y0 = 0.41 + 0.02 k m) leaves through y = 0 at t = sqrt(2 y0 / g), exactly:
 #  - "stop" (the default) stops the run with exit code 3 when the lowest row leaves
-#    (t = 0.2891 s), naming the key that would drop such particles;
+#    (t = 0.2891 s), naming the key that would drop such particles, and gives the last good
+#    state's spacing (a rigid lattice: nothing crowded, the closest pair 1 dx apart);
 #  - "remove" drops the rows as they leave and counts them: by t = 0.3 s two rows (40 of 200
 #    particles) have gone, the last snapshot holds the other 160 inside the domain, and
 #    mass_final is 4/5 of mass_initial; the projection scheme, whose explicit gravity runs
@@ -25,6 +26,9 @@ grep -q 'reached a position outside the domain .*domain.particle_exit = "remove"
     "$work/stop.txt" || fail "stop message: $(cat "$work/stop.txt")"
 grep -q 'at step [0-9]*, t = 0.289' "$work/stop.txt" ||
     fail "the lowest row did not leave at t = sqrt(2 * 0.41 / g) = 0.2891 s: $(cat "$work/stop.txt")"
+# The failure message gives the last good state's spacing: the block falls as a rigid lattice.
+grep -q 'at the last good state 0 of 200 fluid particles (0 %) have a fluid neighbour closer than dx/2, the closest pair is 1 dx apart' \
+    "$work/stop.txt" || fail "stop message without the rigid lattice's spacing: $(cat "$work/stop.txt")"
 
 # The final state of a run: fluid count, lowest y, removed count, mass ratio.
 final_state() { # results folder

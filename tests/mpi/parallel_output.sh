@@ -57,6 +57,7 @@ same_totals() { # a.json b.json label
     a=$(totals "$1") b=$(totals "$2")
     [[ -n $a && $a == "$b" ]] || fail "$3: summary totals differ: $a / $b"
     [[ $a == *fluid_fluid* ]] || fail "$3: no census in $a"
+    [[ $a == *fluid_crowded* && $a == *closest_fluid_pair* ]] || fail "$3: no spacing in $a"
 }
 
 same_snapshots() { # dir label
