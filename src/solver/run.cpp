@@ -269,10 +269,13 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.mass_final = at_end.mass;
     result.fluid_removed = sim.removed_particles();
     if (result.fluid_removed > 0)
-        log.info("{} fluid particles left the domain and were removed over the run "
-                 "(domain.particle_exit = \"remove\"; summary.json: fluid_particles_removed, "
-                 "and their mass is missing from mass_final)",
-                 result.fluid_removed);
+        log.info("{} left the domain and {} removed over the run (domain.particle_exit = "
+                 "\"remove\"; summary.json: fluid_particles_removed, and their mass is missing "
+                 "from mass_final)",
+                 result.fluid_removed == 1
+                     ? std::string("1 fluid particle")
+                     : fmt::format("{} fluid particles", result.fluid_removed),
+                 result.fluid_removed == 1 ? "was" : "were");
     figures.census_end = at_end.census;
     {
         const std::string spacing =
