@@ -59,6 +59,15 @@ for layout in 1x1 2x1 3x1; do
     grep -q '"fluid_particles_removed": 180' "$work/free_fall_exit/$layout/summary.json" ||
         { echo "FAIL free_fall_exit: $layout did not remove 180 particles"; exit 1; }
 done
+# The default stops at the first exit (t = 0.2891 s) on every rank together; the message gives
+# the last good state's spacing, reduced over the ranks: all 200 particles, a rigid lattice.
+code=0
+sluice_on 3 run "$src/tests/data/free_fall_exit.toml" --out "$work/free_fall_stop" -q \
+    2>"$work/free_fall_stop.txt" || code=$?
+[[ $code == 3 ]] || { echo "FAIL free_fall_stop: exit code $code on 3 ranks, expected 3"; exit 1; }
+grep -q 'at the last good state 0 of 200 fluid particles (0 %) have a fluid neighbour closer than dx/2, the closest pair is 1 dx apart' \
+    "$work/free_fall_stop.txt" ||
+    { echo "FAIL free_fall_stop: no spacing over all ranks: $(cat "$work/free_fall_stop.txt")"; exit 1; }
 check_case dam_break_3d dam_break_3d.toml --set time.end_time=0.02 \
     --set time.output_interval=0.005 --set runtime.rebalance_every=15 \
     --set 'runtime.initial_decomposition="key-range"'
