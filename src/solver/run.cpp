@@ -78,6 +78,22 @@ void log_solver_totals(const Simulation<D>& sim, RunLog& log) {
                  pt->relaxation_dropped, pt->solves);
 }
 
+// "N fluid particle(s) left the domain and was/were removed": the per-step and the run's line.
+std::string left_and_removed(std::int64_t n) {
+    return fmt::format("{} fluid particle{} left the domain and {} removed", n, n == 1 ? "" : "s",
+                       n == 1 ? "was" : "were");
+}
+
+// The fluid's spacing at the end of a run, in the log: a warning where it is crowded.
+void log_end_spacing(const NeighbourCensus& census, Real dx, RunLog& log) {
+    const std::string spacing =
+        fmt::format("fluid spacing at the end: {}", spacing_sentence(census, dx));
+    if (crowded_warning(census))
+        log.warn("{} (docs/IMPACT_LOADS.md, \"Particle spacing\")", spacing);
+    else
+        log.info("{}", spacing);
+}
+
 // domain.particle_exit = "remove": the particles the last step removed, in the log (the first
 // removal on the console too). A run whose fluid has all left stops: nothing is left to run.
 template <int D>
@@ -87,10 +103,8 @@ void report_removed(const Simulation<D>& sim, std::uint64_t fluid_at_start,
     if (n == 0)
         return;
     const std::int64_t total = sim.removed_particles();
-    const std::string line =
-        fmt::format("step {}, t = {:.6g} s: {} fluid particle{} left the domain and {} removed "
-                    "({} in the run)",
-                    sim.steps(), sim.time(), n, n == 1 ? "" : "s", n == 1 ? "was" : "were", total);
+    const std::string line = fmt::format("step {}, t = {:.6g} s: {} ({} in the run)", sim.steps(),
+                                         sim.time(), left_and_removed(n), total);
     if (total - removed_before == n)
         log.warn("{} (domain.particle_exit = \"remove\"; later removals go to the log file "
                  "only)",
@@ -269,22 +283,11 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.mass_final = at_end.mass;
     result.fluid_removed = sim.removed_particles();
     if (result.fluid_removed > 0)
-        log.info("{} left the domain and {} removed over the run (domain.particle_exit = "
-                 "\"remove\"; summary.json: fluid_particles_removed, and their mass is missing "
-                 "from mass_final)",
-                 result.fluid_removed == 1
-                     ? std::string("1 fluid particle")
-                     : fmt::format("{} fluid particles", result.fluid_removed),
-                 result.fluid_removed == 1 ? "was" : "were");
+        log.info("{} over the run (domain.particle_exit = \"remove\"; summary.json: "
+                 "fluid_particles_removed, and their mass is missing from mass_final)",
+                 left_and_removed(result.fluid_removed));
     figures.census_end = at_end.census;
-    {
-        const std::string spacing =
-            fmt::format("fluid spacing at the end: {}", spacing_sentence(at_end.census, cfg.dx));
-        if (crowded_warning(at_end.census))
-            log.warn("{} (docs/IMPACT_LOADS.md, \"Particle spacing\")", spacing);
-        else
-            log.info("{}", spacing);
-    }
+    log_end_spacing(at_end.census, cfg.dx, log);
     log_memory("at the end");
     if (!opts.trace_path.empty())
         sim.write_trace(opts.trace_path);
