@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -20,7 +21,10 @@ NeighbourCensus count_neighbours(const CellGrid<D>& grid, const Particles<D>& P,
 template <int D>
 NeighbourCensus count_neighbours(const CellGrid<D>& grid, std::span<const Vec<D>> x,
                                  std::span<const Kind> kind, Real support, Real crowded,
-                                 const std::function<bool(MortonKey)>& counted) {
+                                 const std::function<bool(MortonKey)>& counted,
+                                 std::span<Real> nearest_out) {
+    if (!nearest_out.empty() && nearest_out.size() != x.size())
+        throw std::invalid_argument("count_neighbours: `nearest` must have an entry per particle");
     // Positions and kinds sorted by cell (a counting sort; the order inside a cell does not
     // change a count): 21-29 bytes per particle, not a copy of every field.
     const std::size_t n = x.size();
@@ -43,10 +47,15 @@ NeighbourCensus count_neighbours(const CellGrid<D>& grid, std::span<const Vec<D>
     }
     std::vector<Vec<D>> xs(n);
     std::vector<Kind> ks(n);
+    std::vector<std::uint32_t> given; // sorted place -> index in x (only for nearest_out)
+    if (!nearest_out.empty())
+        given.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t at = ranges.end[cell[i]]++;
         xs[at] = x[i];
         ks[at] = kind[i];
+        if (!given.empty())
+            given[at] = static_cast<std::uint32_t>(i);
     }
     cell = {};
     const Neighbourhood<D> nb{&grid, &ranges, std::span<const Vec<D>>(xs), support};
@@ -72,11 +81,13 @@ NeighbourCensus count_neighbours(const CellGrid<D>& grid, std::span<const Vec<D>
             (i_fluid ? census.fluid_wall : census.wall_wall) += to_wall;
             if (!i_fluid)
                 continue;
+            const Real nearest = std::sqrt(nearest_fluid2); // inf when to_fluid == 0
+            if (!given.empty())
+                nearest_out[given[i]] = nearest;
             if (to_fluid == 0) {
                 ++census.fluid_isolated;
                 continue;
             }
-            const Real nearest = std::sqrt(nearest_fluid2);
             census.closest_fluid_pair = std::min(census.closest_fluid_pair, nearest);
             if (nearest < crowded)
                 ++census.fluid_crowded;
@@ -89,9 +100,11 @@ template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, const Particles
 template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, const Particles<3>&, Real, Real);
 template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, std::span<const Vec<2>>,
                                              std::span<const Kind>, Real, Real,
-                                             const std::function<bool(MortonKey)>&);
+                                             const std::function<bool(MortonKey)>&,
+                                             std::span<Real>);
 template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, std::span<const Vec<3>>,
                                              std::span<const Kind>, Real, Real,
-                                             const std::function<bool(MortonKey)>&);
+                                             const std::function<bool(MortonKey)>&,
+                                             std::span<Real>);
 
 } // namespace sluice

@@ -23,8 +23,8 @@ using h5::write_attribute;
 
 namespace {
 
-const std::vector<std::string> kKnownFields = {"position",     "velocity", "density", "pressure",
-                                               "acceleration", "mass",     "id",      "kind"};
+const std::vector<std::string> kKnownFields = {
+    "position", "velocity", "density", "pressure", "acceleration", "mass", "id", "kind", "spacing"};
 
 bool is_vector_field(const std::string& f) {
     return f == "position" || f == "velocity" || f == "acceleration";
@@ -162,8 +162,14 @@ std::vector<typename SnapshotWriter<D>::Earlier> SnapshotWriter<D>::written() co
 }
 
 template <int D>
+bool SnapshotWriter<D>::writes_spacing() const {
+    return std::find(fields_.begin(), fields_.end(), "spacing") != fields_.end();
+}
+
+template <int D>
 std::uint64_t SnapshotWriter<D>::write_h5(const std::string& path, const Particles<D>& ps,
-                                          std::size_t n, double time, long step) const {
+                                          std::size_t n, double time, long step,
+                                          const SnapshotSpacing* spacing) const {
     const h5::World w = h5::world();
     const h5::Slice slice = h5::slice_of_count(w, n);
     const Handle fapl = h5::file_access(w);
@@ -207,7 +213,25 @@ std::uint64_t SnapshotWriter<D>::write_h5(const std::string& path, const Particl
             for (std::size_t i = 0; i < n; ++i)
                 kinds[i] = static_cast<std::uint8_t>(ps.kind[i]);
             rows(field, kinds.data(), 1, H5T_NATIVE_UINT8, H5T_STD_U8LE);
+        } else if (field == "spacing") {
+            if (spacing == nullptr || spacing->over_dx.size() != n)
+                throw std::logic_error("snapshot: the spacing field needs a value per particle");
+            const std::vector<double> values(spacing->over_dx.begin(), spacing->over_dx.end());
+            rows(field, values.data(), 1, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
         }
+    }
+    if (spacing != nullptr) {
+        const NeighbourCensus& c = spacing->census;
+        const auto count = [&](const char* name, std::uint64_t v) {
+            write_attribute(f, name, v, H5T_NATIVE_UINT64, H5T_STD_U64LE);
+        };
+        count("fluid_particles", c.fluid);
+        count("fluid_crowded", c.fluid_crowded);
+        count("fluid_isolated", c.fluid_isolated);
+        write_attribute(f, "crowded_below", double(spacing->crowded_below), H5T_NATIVE_DOUBLE,
+                        H5T_IEEE_F64LE);
+        write_attribute(f, "closest_fluid_pair", double(c.closest_fluid_pair), H5T_NATIVE_DOUBLE,
+                        H5T_IEEE_F64LE);
     }
     write_attribute(f, "time", time, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
     write_attribute(f, "step", static_cast<std::int64_t>(step), H5T_NATIVE_INT64, H5T_STD_I64LE);
@@ -218,7 +242,7 @@ std::uint64_t SnapshotWriter<D>::write_h5(const std::string& path, const Particl
 
 template <int D>
 std::string SnapshotWriter<D>::write(const Particles<D>& ps, std::size_t count, double time,
-                                     long step) {
+                                     long step, const SnapshotSpacing* spacing) {
     const h5::World w = h5::world();
     const std::string rel = relative_path(written_.size());
     const fs::path final_path = fs::path(out_dir_) / rel;
@@ -229,7 +253,7 @@ std::string SnapshotWriter<D>::write(const Particles<D>& ps, std::size_t count, 
     std::optional<std::string> error;
     std::uint64_t total = 0;
     try {
-        total = write_h5(tmp.string(), ps, count, time, step);
+        total = write_h5(tmp.string(), ps, count, time, step, spacing);
     } catch (const std::exception& e) {
         error = e.what();
     }

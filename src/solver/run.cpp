@@ -16,6 +16,7 @@
 #include "run_report.hpp"
 #include "run_requests.hpp"
 #include "run_totals.hpp"
+#include "spacing_census.hpp"
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -170,7 +171,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     // per stage.
     RunFigures figures;
     figures.support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
-    figures.crowded = Real(0.5) * cfg.dx;
+    figures.crowded = crowded_below(cfg.dx);
     figures.start_step = start_step;
     figures.resumed = resumed;
     figures.earlier_wall_seconds = start.wall_seconds;
@@ -225,9 +226,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
             // Crowded particles are where violent runs blow up (docs/IMPACT_LOADS.md,
             // "Particle spacing"): the last good state's spacing goes with the message.
             const std::string spacing = fmt::format(
-                "; at the last good state {}",
-                spacing_sentence(run_totals<D>(sim, figures.support, figures.crowded).census,
-                                 cfg.dx));
+                "; at the last good state {}", spacing_sentence(outputs.last_spacing(), cfg.dx));
             progress.finish();
             log.file_only(fmt::format("the run failed: {}{}{}", e.what(), where, spacing));
             throw RunError(std::string(e.what()) + where + spacing);

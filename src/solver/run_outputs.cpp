@@ -3,9 +3,14 @@
 
 #include "probe_sampling.hpp"
 #include "run_requests.hpp"
+#include "spacing_census.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
+#include <limits>
+#include <variant>
+#include <vector>
 
 namespace sluice {
 
@@ -55,7 +60,7 @@ void RunOutputs<D>::sample(const Simulation<D>& sim, bool force) {
                 probe_files_->write(due.probes[n], t, rows[n]);
     }
     if (due.snapshot) {
-        const std::string file = snapshots_->write(sim.particles(), sim.owned(), t, sim.steps());
+        const std::string file = write_snapshot(sim);
         if (root_)
             log_.debug("snapshot {} at t = {:.6g} s (step {})", file, t, sim.steps());
     }
@@ -78,9 +83,27 @@ template <int D>
 std::string RunOutputs<D>::last_snapshot(const Simulation<D>& sim, const std::string& label) {
     if (!snapshots_) // snapshots are off: this one is written all the same
         snapshots_ = std::make_unique<SnapshotWriter<D>>(out_dir_, cfg_.fields);
-    const std::string file =
-        snapshots_->write(sim.particles(), sim.owned(), sim.time(), sim.steps());
+    const std::string file = write_snapshot(sim);
     return root_ ? fmt::format(", {} in {}", label, file) : std::string();
+}
+
+// Every snapshot records the fluid's spacing (its attributes; the field when asked for): a
+// census over the neighbours at each output, outside the step, that shows when and where a
+// WCSPH fluid starts to crowd (docs/IMPACT_LOADS.md, "Particle spacing").
+template <int D>
+std::string RunOutputs<D>::write_snapshot(const Simulation<D>& sim) {
+    const Real support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+    const Real crowded = crowded_below(cfg_.dx);
+    const bool field = snapshots_->writes_spacing();
+    const SpacingCensus census = spacing_census<D>(sim, support, crowded, field);
+    std::vector<Real> over_dx(census.nearest.size());
+    for (std::size_t i = 0; i < over_dx.size(); ++i) {
+        const Real r = census.nearest[i];
+        over_dx[i] = std::isfinite(r) ? r / Real(cfg_.dx) : std::numeric_limits<Real>::quiet_NaN();
+    }
+    const SnapshotSpacing spacing{census.census, crowded, over_dx};
+    last_spacing_ = census.census;
+    return snapshots_->write(sim.particles(), sim.owned(), sim.time(), sim.steps(), &spacing);
 }
 
 // Collective: every rank writes its particles; the rest is rank 0's.

@@ -34,6 +34,8 @@ public:
     // After a failed step: the state every rank holds (the last good one) as a snapshot, even
     // with snapshots off; returns ", <label> in <file>" on rank 0 (empty on the others).
     std::string last_snapshot(const Simulation<D>& sim, const std::string& label);
+    // The fluid's spacing census of the last snapshot written (every rank's counts together).
+    [[nodiscard]] const NeighbourCensus& last_spacing() const { return last_spacing_; }
     // Collective: the particles, the solver's state and this record of the outputs;
     // `wall_seconds` is every segment's time loop so far.
     void write_checkpoint(const Simulation<D>& sim, double wall_seconds);
@@ -49,6 +51,9 @@ private:
     OutputSchedule schedule_;
     std::unique_ptr<SnapshotWriter<D>> snapshots_;
     std::unique_ptr<ProbeWriter> probe_files_;
+    NeighbourCensus last_spacing_;
+    // Collective: the next snapshot, with the fluid's spacing (spacing_census.hpp).
+    std::string write_snapshot(const Simulation<D>& sim);
 };
 
 extern template class RunOutputs<2>;

@@ -24,6 +24,7 @@ nlohmann::json census_json(const NeighbourCensus& n) {
     return j;
 }
 
+// "dx/2": the threshold of crowded_below (spacing_census.hpp).
 std::string spacing_sentence(const NeighbourCensus& n, Real dx) {
     std::string s = fmt::format(
         "{} of {} fluid particles ({:.2g} %) have a fluid neighbour closer than dx/2",

@@ -37,7 +37,7 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
 // neighbour count as crowded), and the segment's place in a restarted run.
 struct RunFigures {
     Real support = 0;
-    Real crowded = 0; // half the initial spacing [m]
+    Real crowded = 0; // crowded_below(dx): half the initial spacing [m] (spacing_census.hpp)
     NeighbourCensus census_start, census_end;
     long start_step = 0;             // the step this segment started from
     bool resumed = false;            // a restart

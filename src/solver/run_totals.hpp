@@ -17,10 +17,7 @@ struct RunTotals {
 
 // Collective. Counts and census on every rank; the mass on rank 0 (which receives 16 bytes per
 // fluid particle: the ids and masses that Particles::total_mass sums, in its order, so the
-// figure has the same bits on any layout). The census: each rank counts the particles in the
-// cells it owns, by their current positions, with neighbours from the adjacent cells, which
-// every rank sends the owners of those cells; the integer counts add up exactly, and the
-// closest fluid pair is the smallest of the ranks'. `crowded`: see count_neighbours.
+// figure has the same bits on any layout). The census: spacing_census (spacing_census.hpp).
 template <int D>
 RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded);
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# A short real run writes the documented results folder: snapshots + XDMF series, probe CSVs
-# with a header and time in the first column, and summary.json with the documented keys; and
+# A short real run writes the documented results folder: snapshots + XDMF series (with the
+# fluid's spacing), probe CSVs with a header and time in the first column, and summary.json
+# with the documented keys; and
 # `sluice info` describes the case. Usage: run_outputs.sh <sluice executable> <source dir>
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
@@ -9,12 +10,43 @@ source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
 grep -q "3200 fluid" "$work/info.txt" || fail "info does not report the 3200 fluid particles"
 
 "$exe" run "$src/cases/dam_break_2d.toml" --out "$work/out" --threads 2 --quiet \
-    --set time.end_time=0.02 --set time.output_interval=0.01 || fail "run exit code $?"
+    --set time.end_time=0.02 --set time.output_interval=0.01 \
+    --set 'output.fields=["velocity","pressure","kind","spacing"]' || fail "run exit code $?"
 out="$work/out"
 [ -f "$out/summary.json" ] || fail "no summary.json"
 [ -f "$out/snapshots.xmf" ] || fail "no snapshots.xmf"
 n=$(ls "$out"/snapshots/snap_*.h5 2>/dev/null | wc -l)
 [ "$n" -eq 3 ] || fail "expected 3 snapshots (t = 0, 0.01, 0.02), found $n"
+# The fluid's spacing in every snapshot: at t = 0 the lattice, every fluid particle dx from its
+# nearest fluid neighbour, less the hydrostatic start's compression (rho/rho0 - 1 up to
+# g H / c0^2 = 0.0025 at the bottom: rows down to 0.9975 dx); walls NaN; in every snapshot the
+# attributes count what the field shows.
+/usr/bin/python3 - "$out" <<'PY' || fail "snapshot spacing"
+import glob, math, sys
+import h5py
+import numpy as np
+files = sorted(glob.glob(f"{sys.argv[1]}/snapshots/snap_*.h5"))
+dx = 0.01
+bad = []
+for k, name in enumerate(files):
+    with h5py.File(name) as f:
+        s, kind, a = f["spacing"][:], f["kind"][:], f.attrs
+        fluid = kind == 0
+        if k == 0 and not (s[fluid].min() > 0.997 and s[fluid].max() <= 1 + 1e-12):
+            bad.append(f"t = 0: fluid spacing {s[fluid].min()}..{s[fluid].max()} dx")
+        if not np.all(np.isnan(s[~fluid])):
+            bad.append(f"{name}: a wall particle has a spacing")
+        counts = (int(a["fluid_particles"]), int(a["fluid_crowded"]), int(a["fluid_isolated"]))
+        shown = (int(fluid.sum()), int((s[fluid] < 0.5).sum()), int(np.isnan(s[fluid]).sum()))
+        if counts != shown:
+            bad.append(f"{name}: attributes {counts}, field {shown}")
+        if abs(a["crowded_below"] - dx / 2) > 1e-15:
+            bad.append(f"{name}: crowded_below {a['crowded_below']}")
+        if abs(a["closest_fluid_pair"] / dx - np.nanmin(s[fluid])) > 1e-9:
+            bad.append(f"{name}: closest pair {a['closest_fluid_pair']} against the field")
+print("\n".join(bad))
+sys.exit(1 if bad or len(files) != 3 else 0)
+PY
 for p in p2_right_wall front level_x0; do
     f="$out/probes/$p.csv"
     [ -f "$f" ] || { fail "missing $f"; continue; }

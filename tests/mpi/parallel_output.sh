@@ -10,7 +10,9 @@
 #    also on a periodic case (Poiseuille flow);
 #  - the 3-rank run's last checkpoint, continued on 2 ranks (each rank reads an even share and
 #    sends it to its owners), rewrites the snapshots after the checkpoint (every field,
-#    acceleration and mass included) byte-identical to the uninterrupted runs'.
+#    acceleration, mass and the fluid's spacing included) byte-identical to the
+#    uninterrupted runs'. The spacing field and attributes come from a census that the owner
+#    of each cell takes and sends back to the particles' holders (spacing_census.hpp).
 # Usage: parallel_output.sh SLUICE_EXE SOURCE_DIR MPIEXEC
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
@@ -18,7 +20,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
 case_file="$src/cases/dam_break_2d.toml"
 sets=(--set particles.dx=0.02 --set time.end_time=0.1 --set time.output_interval=0.025
       --set runtime.rebalance_every=25 --set checkpoint.every_steps=50
-      --set 'output.fields=["position","velocity","acceleration","density","pressure","mass","id","kind"]'
+      --set 'output.fields=["position","velocity","acceleration","density","pressure","mass","id","kind","spacing"]'
       --threads 1 --quiet)
 
 run() { # ranks args...

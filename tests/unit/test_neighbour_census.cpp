@@ -1,12 +1,15 @@
 // The neighbour census (core/neighbour_census.hpp) on hand-built sets: pair counts by kind, and
 // the fluid's spacing (crowded particles, the closest fluid pair, particles alone), with
-// counts that add up over any partition of the cells.
+// counts that add up over any partition of the cells, and each fluid particle's nearest fluid
+// neighbour.
 #include "sluice/core/neighbour_census.hpp"
 
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <vector>
 
 using namespace sluice;
 
@@ -96,4 +99,39 @@ TEST_CASE("no fluid at all: nothing crowded, no closest pair") {
     CHECK(n.fluid_isolated == 1);
     CHECK(n.fluid_crowded == 0);
     CHECK(n.closest_fluid_pair == std::numeric_limits<Real>::infinity());
+}
+
+TEST_CASE("each fluid particle's nearest fluid neighbour, in the order given") {
+    Particles<2> P = lattice();
+    const std::size_t moved = 10 + 4 * 10 + 3; // to 0.3 dx from (4, 4), as above
+    P.x[moved] = Vec<2>(0.1 + 4 * kDx - 0.3 * kDx, 0.1 + 4 * kDx);
+    P.push_back(1000, Kind::fluid, Vec<2>(0.4, 0.4), Vec<2>::Zero(), kRho, kRho * kDx * kDx);
+    const CellGrid<2> g = grid();
+    const Real untouched = -1;
+    std::vector<Real> nearest(P.size(), untouched);
+    count_neighbours<2>(
+        g, std::span<const Vec<2>>(P.x), std::span<const Kind>(P.kind), kSupport, kDx / 2,
+        [](MortonKey) { return true; }, std::span<Real>(nearest));
+    for (std::size_t i = 0; i < 10; ++i) // walls: not fluid, left alone
+        CHECK(nearest[i] == untouched);
+    CHECK(nearest[moved] == doctest::Approx(0.3 * kDx).epsilon(1e-9));
+    CHECK(nearest[moved + 1] == doctest::Approx(0.3 * kDx).epsilon(1e-9)); // (4, 4)
+    CHECK(nearest[10] == doctest::Approx(kDx).epsilon(1e-12));             // the corner (0, 0)
+    // (2, 4): its right neighbour moved 0.7 dx away (to 1.7 dx); (2, 3) and (2, 5) stay at dx.
+    CHECK(nearest[moved - 1] == doctest::Approx(kDx).epsilon(1e-12));
+    CHECK(nearest.back() == std::numeric_limits<Real>::infinity()); // the droplet
+    // Over a partition of the cells each part sets the entries of the particles it counts,
+    // to the same values.
+    std::vector<Real> parts(P.size(), untouched);
+    for (const bool even : {true, false})
+        count_neighbours<2>(
+            g, std::span<const Vec<2>>(P.x), std::span<const Kind>(P.kind), kSupport, kDx / 2,
+            [even](MortonKey k) { return (k % 2 == 0) == even; }, std::span<Real>(parts));
+    CHECK(parts == nearest);
+    // The output must have an entry per particle.
+    std::vector<Real> short_out(3);
+    CHECK_THROWS_AS(count_neighbours<2>(
+                        g, std::span<const Vec<2>>(P.x), std::span<const Kind>(P.kind), kSupport,
+                        kDx / 2, [](MortonKey) { return true; }, std::span<Real>(short_out)),
+                    std::invalid_argument);
 }

@@ -38,11 +38,14 @@ NeighbourCensus count_neighbours(const CellGrid<D>& grid, const Particles<D>& P,
 // `counted` accepts are counted (with their neighbours j among all the particles given): over
 // a partition of the cells the counts add up to the whole set's, each part seeing every
 // particle of the cells adjacent to its own. Sorts copies of x and kind by cell (no copy of
-// the other fields).
+// the other fields). When `nearest` is given (x.size() entries), each counted fluid particle's
+// entry is set to the distance to its nearest fluid neighbour, infinity when it has none
+// within the support; the other entries are left as they are.
 template <int D>
 NeighbourCensus count_neighbours(const CellGrid<D>& grid, std::span<const Vec<D>> x,
                                  std::span<const Kind> kind, Real support, Real crowded,
-                                 const std::function<bool(MortonKey)>& counted);
+                                 const std::function<bool(MortonKey)>& counted,
+                                 std::span<Real> nearest = {});
 
 extern template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, const Particles<2>&, Real,
                                                     Real);
@@ -50,9 +53,11 @@ extern template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, const Pa
                                                     Real);
 extern template NeighbourCensus count_neighbours<2>(const CellGrid<2>&, std::span<const Vec<2>>,
                                                     std::span<const Kind>, Real, Real,
-                                                    const std::function<bool(MortonKey)>&);
+                                                    const std::function<bool(MortonKey)>&,
+                                                    std::span<Real>);
 extern template NeighbourCensus count_neighbours<3>(const CellGrid<3>&, std::span<const Vec<3>>,
                                                     std::span<const Kind>, Real, Real,
-                                                    const std::function<bool(MortonKey)>&);
+                                                    const std::function<bool(MortonKey)>&,
+                                                    std::span<Real>);
 
 } // namespace sluice

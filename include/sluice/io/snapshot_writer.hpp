@@ -6,18 +6,34 @@
 //
 // Each .h5 holds one dataset per field at the root: position, velocity, acceleration (N x 3
 // float64; 2-D cases are padded with z = 0), density, pressure, mass (N float64), id (N
-// uint64), kind (N uint8: 0 fluid, 1 wall), and the root attributes time [s] (float64),
-// step (int64) and dimension (int32). position is always written: it is the XDMF geometry.
+// uint64), kind (N uint8: 0 fluid, 1 wall), spacing (N float64: the distance from a fluid
+// particle to its nearest fluid neighbour over dx; NaN for a wall particle and for a fluid
+// particle with no fluid neighbour within the kernel support), and the root attributes time [s]
+// (float64), step (int64) and dimension (int32). position is always written: it is the XDMF
+// geometry. With the fluid's spacing given, every snapshot also gets the root attributes
+// fluid_particles, fluid_crowded, fluid_isolated (uint64), crowded_below and
+// closest_fluid_pair [m] (float64; infinity when there is no fluid pair).
 // Files are written under a temporary name and renamed, so a snapshot or the .xmf is either
 // complete or absent under its final name.
+#include "sluice/core/neighbour_census.hpp"
 #include "sluice/core/particles.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace sluice {
+
+// The fluid's spacing at a snapshot (computed by the solver over every rank): the census,
+// every rank's counts together, and this rank's values of the "spacing" field, one per
+// particle it writes.
+struct SnapshotSpacing {
+    NeighbourCensus census;
+    Real crowded_below = 0;        // [m]
+    std::span<const Real> over_dx; // nearest fluid neighbour / dx, NaN where there is none
+};
 
 template <int D>
 class SnapshotWriter {
@@ -52,7 +68,11 @@ public:
     // order): each writes its slice of the file through MPI-IO at the offset of the ranks
     // before it, and rank 0 alone touches the folder (removals, renames, the .xmf). The file
     // is the same for any rank layout, byte for byte. Every rank throws if any rank failed.
-    std::string write(const Particles<D>& particles, std::size_t count, double time, long step);
+    // `spacing` is required when the fields include "spacing".
+    std::string write(const Particles<D>& particles, std::size_t count, double time, long step,
+                      const SnapshotSpacing* spacing = nullptr);
+    // Whether the fields include "spacing".
+    [[nodiscard]] bool writes_spacing() const;
 
     [[nodiscard]] std::size_t count() const { return written_.size(); }
     [[nodiscard]] const std::string& xmf_path() const { return xmf_path_; }
@@ -68,7 +88,8 @@ private:
 
     // Returns the particle count of the file (every rank's together).
     std::uint64_t write_h5(const std::string& path, const Particles<D>& particles,
-                           std::size_t count, double time, long step) const;
+                           std::size_t count, double time, long step,
+                           const SnapshotSpacing* spacing) const;
     void write_xmf() const;
     void init_fields(std::vector<std::string> fields);
     // Removes snapshot files numbered `keep` and above, and temporary ones.
