@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# scripts/plot on a short real run: `probes`, `history`, `snapshot` and `timeline` each write
-# PNG files that are real pictures (at least 300 x 100 pixels, more than 16 colours, no colour
-# covering 99 % of the image), not an empty canvas. `probes` also on the wall-load probes
+# scripts/plot on a short real run: `probes`, `history`, `snapshot` (also coloured by the
+# fluid's spacing), `spacing` and `timeline` each write PNG files that are real pictures (at
+# least 300 x 100 pixels, more than 16 colours, no colour covering 99 % of the image), not an
+# empty canvas. `probes` also on the wall-load probes
 # (force with a moment, area sensor, every-step sampling) in 2-D (a copy of dam_break_2d with
 # them added: units per metre of width) and 3-D (cases/dam_break_3d.toml, which carries them):
 # the line it prints for each panel must name the kind, the sensor size and the unit.
@@ -17,7 +18,8 @@ fi
 
 out="$work/out"
 "$exe" run "$src/cases/dam_break_2d.toml" --out "$out" --threads 2 --quiet \
-    --set time.end_time=0.02 --set time.output_interval=0.01 --trace "$work/trace.json" ||
+    --set time.end_time=0.02 --set time.output_interval=0.01 --trace "$work/trace.json" \
+    --set 'output.fields=["position","velocity","density","pressure","id","kind","spacing"]' ||
     fail "run exit code $?"
 
 # Each subcommand prints the PNG files it wrote, one a line.
@@ -48,6 +50,11 @@ PY
 plot probes probes "$out"
 plot history history "$out"
 plot snapshot snapshot "$out"
+plot snapshot_spacing snapshot "$out" --field spacing
+plot spacing spacing "$out"
+# `spacing` prints its table: three snapshots of the 3200 fluid particles, none crowded yet.
+[ "$(grep -Ec '^ +[0-9.e-]+ +3200 +0 +0 +0 ' "$work/spacing.txt")" = 3 ] ||
+    fail "plot spacing: table is not three rows of 3200 fluid, 0 crowded: $(cat "$work/spacing.txt")"
 plot timeline timeline "$work/trace.json"
 
 # The wall-load probes. `probes` prints one line per panel: "probe NAME: what [unit]...".
