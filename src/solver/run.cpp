@@ -184,6 +184,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     log_memory("after start-up");
     const std::uint64_t total_particles = result.particles;
     const std::int64_t removed_before = sim.removed_particles(); // by earlier segments
+    double particle_steps = 0;
 
     // Wall time of this segment's time loop so far; earlier segments' is start.wall_seconds
     // (from the checkpoint), so summary.json can report the whole run's.
@@ -216,6 +217,10 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                                     (sim.steps() + 1) % cfg.checkpoint_every_steps == 0;
             sim.allow_run_ahead(cfg.run_ahead && !last && !checkpoint && outputs.quiet_at(t_next));
         }
+        // Particle-steps of this segment, with the particles each step started with:
+        // domain.particle_exit = "remove" lowers the count during the run.
+        particle_steps += static_cast<double>(
+            total_particles - static_cast<std::uint64_t>(sim.removed_particles() - removed_before));
         try {
             sim.step();
             report_removed(sim, at_start.fluid, removed_before, log);
@@ -243,9 +248,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
                     ? fmt::format(", no free surface: source shift {:.3e} Pa", ps->source_shift)
                     : std::string());
         const double wall = loop_seconds();
-        progress.update(sim.steps(), sim.time(), sim.dt(),
-                        static_cast<double>(total_particles) *
-                            static_cast<double>(sim.steps() - start_step) / wall);
+        progress.update(sim.steps(), sim.time(), sim.dt(), particle_steps / wall);
         outputs.sample(sim, false);
         const unsigned agreed = sim.agreed_requests();
         const bool stop = (agreed & request_stop) != 0;
@@ -274,9 +277,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.wall_seconds = loop_seconds();
     result.steps = sim.steps();
     result.simulated_time = sim.time();
-    result.particle_steps_per_second = static_cast<double>(total_particles) *
-                                       static_cast<double>(result.steps - start_step) /
-                                       result.wall_seconds;
+    result.particle_steps_per_second = particle_steps / result.wall_seconds;
     log_memory("after the time loop");
     const RunTotals at_end = run_totals<D>(sim, figures.support, figures.crowded);
     result.mass_final = at_end.mass;
