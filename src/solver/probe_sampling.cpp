@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <variant>
 
 namespace sluice {
 namespace {
@@ -114,11 +113,6 @@ std::vector<WallPatch<D>> force_patches(const CaseConfig& cfg, const ProbeConfig
     return out;
 }
 
-template <int D>
-Real kernel_support(const Simulation<D>& sim) {
-    return std::visit([](const auto& k) { return k.support(); }, sim.kernel());
-}
-
 // Every particle a probe's value depends on lies in its footprint. The kernel sums of the
 // pressure probes and the wall loads reach one support from the points and wall particles they
 // sum for; before the first step the wall particles they read are refreshed from the fluid
@@ -127,7 +121,7 @@ Real kernel_support(const Simulation<D>& sim) {
 template <int D>
 Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
     const Real inf = std::numeric_limits<Real>::infinity();
-    const Real reach = 2 * kernel_support(sim);
+    const Real reach = 2 * sim.kernel_support();
     const Real dx = Real(sim.config().dx);
     Box<D> box{Vec<D>::Constant(-inf), Vec<D>::Constant(inf)};
     switch (probe.type) {
@@ -186,7 +180,7 @@ Box<D> sensor_contact_box(const Simulation<D>& sim, const ProbeConfig& probe) {
     const Real reach = face.diameter / 2 + Real(sim.h());
     Box<D> box{face.centre.array() - reach, face.centre.array() + reach};
     const int a = face.normal_axis;
-    const Real far = face.centre[a] + Real(face.into_wall) * kernel_support(sim);
+    const Real far = face.centre[a] + Real(face.into_wall) * sim.kernel_support();
     box.lo[a] = std::min(face.centre[a], far);
     box.hi[a] = std::max(face.centre[a], far);
     return box;
@@ -216,7 +210,7 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         // (projection; none under WCSPH).
         const Real pressure = wall_pressure_sensor(P, sim.kernel(), face, dx / 4, p_min);
         return {double(pressure +
-                       contact_traction(contacts, face, dx, kernel_support(sim), Real(sim.h())))};
+                       contact_traction(contacts, face, dx, sim.kernel_support(), Real(sim.h())))};
     }
     case ProbeType::water_level: {
         std::optional<Real> y;

@@ -170,7 +170,7 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     // gather: run_totals.hpp): the benchmarks turn them into achieved interactions per second
     // per stage.
     RunFigures figures;
-    figures.support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+    figures.support = sim.kernel_support();
     figures.crowded = crowded_below(cfg.dx);
     figures.start_step = start_step;
     figures.resumed = resumed;

@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <limits>
-#include <variant>
 #include <vector>
 
 namespace sluice {
@@ -92,7 +91,7 @@ std::string RunOutputs<D>::last_snapshot(const Simulation<D>& sim, const std::st
 // WCSPH fluid starts to crowd (docs/IMPACT_LOADS.md, "Particle spacing").
 template <int D>
 std::string RunOutputs<D>::write_snapshot(const Simulation<D>& sim) {
-    const Real support = std::visit([](const auto& k) { return k.support(); }, sim.kernel());
+    const Real support = sim.kernel_support();
     const Real crowded = crowded_below(cfg_.dx);
     const bool field = snapshots_->writes_spacing();
     const SpacingCensus census = spacing_census<D>(sim, support, crowded, field);

@@ -3,7 +3,6 @@
 
 #include "spacing_census.hpp"
 
-#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -15,16 +14,17 @@ RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded) {
     const Particles<D>& P = sim.particles();
     const std::size_t n = sim.owned();
     RunTotals t;
-    t.particles = n;
+    // The census counts every particle once, on the owner of its cell: its totals are every
+    // rank's particle counts together.
+    t.census = spacing_census<D>(sim, support, crowded, false).census;
+    t.particles = t.census.fluid + t.census.wall;
+    t.fluid = t.census.fluid;
     std::vector<std::pair<ParticleId, Real>> masses;
     for (std::size_t i = 0; i < n; ++i)
         if (P.kind[i] == Kind::fluid)
             masses.emplace_back(P.id[i], P.mass[i]);
-    t.fluid = masses.size();
-
     if (!comm.parallel()) {
         t.mass = sum_in_id_order(std::move(masses));
-        t.census = spacing_census<D>(sim, support, crowded, false).census;
         return t;
     }
 
@@ -48,18 +48,6 @@ RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded) {
         }
         t.mass = sum_in_id_order(std::move(masses));
     }
-
-    // Every rank's particle counts, added.
-    tasks::Bytes counts;
-    tasks::put(counts, t.particles);
-    tasks::put(counts, t.fluid);
-    t.particles = t.fluid = 0;
-    for (const auto& b : comm.all_gather(counts)) {
-        std::size_t pos = 0;
-        t.particles += tasks::take<std::uint64_t>(b, pos);
-        t.fluid += tasks::take<std::uint64_t>(b, pos);
-    }
-    t.census = spacing_census<D>(sim, support, crowded, false).census;
     return t;
 }
 

@@ -38,6 +38,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace sluice {
@@ -145,6 +146,10 @@ public:
     void inject_receive_delay(double seconds) { receive_delay_ = seconds; }
     [[nodiscard]] const CellGrid<D>& grid() const { return grid_; }
     [[nodiscard]] const AnyKernel<D>& kernel() const { return kernel_; }
+    // The radius within which the kernel is non-zero [m].
+    [[nodiscard]] Real kernel_support() const {
+        return std::visit([](const auto& k) { return k.support(); }, kernel_);
+    }
     [[nodiscard]] const Eos& eos() const { return eos_; }
     // The momentum equation's parameters (the wall-load probes use the same pair terms).
     [[nodiscard]] const MomentumParams<D>& momentum() const { return momentum_; }
