@@ -142,6 +142,7 @@ void read_numerics(const Section& s, CaseConfig& c) {
         c.delta_sph = 0;
     }
     c.shifting = s.number("shifting", c.shifting);
+    c.acoustic_damper = s.number("acoustic_damper", c.acoustic_damper);
     c.cfl = s.number("cfl", c.cfl);
     c.viscous_cfl = s.number("viscous_cfl", c.viscous_cfl);
     c.force_cfl = s.number("force_cfl", c.force_cfl);

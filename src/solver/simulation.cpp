@@ -1,6 +1,7 @@
 #include "sluice/solver/simulation.hpp"
 
 #include "sluice/io/errors.hpp"
+#include "sluice/physics/acoustic_damper.hpp"
 #include "sluice/solver/initial_share.hpp"
 #include "sluice/solver/initial_state.hpp"
 #include "sluice/solver/particle_exit.hpp"
@@ -108,8 +109,10 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     scheme_ = make_scheme();
     neighbours_.skin = scheme_->skin();
 
-    ts_params_ =
-        TimeStepParams{h_, cfg.viscosity / cfg.rho0, cfg.cfl, cfg.viscous_cfl, cfg.force_cfl};
+    // The acoustic damper is a (bulk) viscosity: it limits the step like the fluid's own.
+    const double nu = cfg.viscosity / cfg.rho0 +
+                      acoustic_damper_viscosity(cfg.acoustic_damper, h_, cfg.sound_speed);
+    ts_params_ = TimeStepParams{h_, nu, cfg.cfl, cfg.viscous_cfl, cfg.force_cfl};
     planes_ = reflective_planes<D>(cfg);
 
     const int layers = wall_layers(support, cfg.dx);

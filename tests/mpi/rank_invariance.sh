@@ -47,6 +47,10 @@ check_case() { # name case args...
 
 check_case dam_break_2d dam_break_2d.toml --set particles.dx=0.02 --set time.end_time=0.1 \
     --set time.output_interval=0.025 --set runtime.rebalance_every=25
+# The acoustic damper reads its neighbours' velocities in the density stage (halo state).
+check_case damper_2d dam_break_2d.toml --set particles.dx=0.02 --set time.end_time=0.1 \
+    --set time.output_interval=0.025 --set runtime.rebalance_every=25 \
+    --set numerics.acoustic_damper=0.3
 # Every probe kind (point and area pressure, forces and moments on faces, a panel and an
 # obstacle, a level, fronts along x and y), sampled every step where the particles are.
 check_case probe_kinds_2d tests/data/probe_kinds_2d.toml --set runtime.rebalance_every=20

@@ -192,10 +192,13 @@ struct CaseConfig {
     // layer of a surge front, blunts its nose and doubles the corner impact pressure
     // (docs/IMPACT_LOADS.md).
     bool wall_artificial_viscosity = false;
-    double shifting = 0;        // particle-shifting coefficient A (0 = off; 4 = Sun et al. 2017)
-    double cfl = 0.25;          // acoustic CFL number: dt <= cfl*h/(c0 + |v|max)
-    double viscous_cfl = 0.125; // dt <= viscous_cfl * h^2 / nu
-    double force_cfl = 0.25;    // dt <= force_cfl * sqrt(h/|a|max)
+    double shifting = 0; // particle-shifting coefficient A (0 = off; 4 = Sun et al. 2017)
+    // Acoustic damper alpha: bulk viscosity nu_a = alpha h c0 added to the pressure as
+    // -rho nu_a div u (0 = off; physics/acoustic_damper.hpp).
+    double acoustic_damper = 0;
+    double cfl = 0.25;              // acoustic CFL number: dt <= cfl*h/(c0 + |v|max)
+    double viscous_cfl = 0.125;     // dt <= viscous_cfl * h^2 / nu
+    double force_cfl = 0.25;        // dt <= force_cfl * sqrt(h/|a|max)
     std::optional<double> fixed_dt; // [s]; refused if above the stability limit
     // Verlet skin in units of dx: neighbour lists hold pairs within support + skin and are
     // rebuilt (with the particle sort) only when a particle has moved more than skin/2.

@@ -61,6 +61,7 @@ private:
 
     RiemannParams<D> riemann_; // numerics.dissipation = "riemann"
     bool riemann_dissipation_ = false;
+    Real damper_nu_ = 0; // acoustic damper nu_a = alpha h c0 [m^2/s]; 0 = off
     bool continuity_ = false;
     double delta_h_c0_ = 0; // delta-SPH coefficient times h c0
     DensityDiffusionParams<D> diffusion_;

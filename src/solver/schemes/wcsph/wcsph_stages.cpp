@@ -6,6 +6,7 @@
 // rows alone.
 #include "wcsph_scheme.hpp"
 
+#include "sluice/physics/acoustic_damper.hpp"
 #include "sluice/physics/continuity_lanes.hpp"
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/drift.hpp"
@@ -39,6 +40,7 @@ WcsphScheme<D>::WcsphScheme(const CaseParams<D>& params, Particles<D>& P, const 
                                 case_.momentum.mu,           case_.momentum.h,
                                 case_.momentum.wall_viscous, case_.momentum.p_floor};
     momentum_lanes_ = acceleration_uses_lanes<D>() && !riemann_dissipation_;
+    damper_nu_ = Real(acoustic_damper_viscosity(cfg.acoustic_damper, case_.h, cfg.sound_speed));
     halo_ = std::make_unique<HaloFields<D>>(P_, cells_.ranges, cells_.grid, rank_.plan, skin() > 0);
 }
 
@@ -197,6 +199,9 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
             }
             equation_of_state(nb, case_.eos, c, P_, std::span<Real>(P_.p),
                               std::span<Real>(P_.p_over_rho2), std::span<Real>(P_.volume));
+            if (damper_nu_ > 0)
+                apply_acoustic_damper(nb, kernel, damper_nu_, c, P_, std::span<Real>(P_.p),
+                                      std::span<Real>(P_.p_over_rho2));
             if (momentum_lanes_) // wall particles in the walls stage, once their state is known
                 for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
                     if (P_.kind[i] == Kind::fluid)
