@@ -7,8 +7,7 @@
 // rho0 g (H - y_probe)): it damps compression, not the weight of the water.
 // Measured when the test was written: 1526 Pa without, 530 Pa with alpha = 0.5, means
 // 3693 and 3686 Pa against 3728 Pa.
-#include "sluice/physics/probes.hpp"
-#include "sluice/solver/simulation.hpp"
+#include "tank_record.hpp"
 #include "validation_support.hpp"
 
 #include <doctest/doctest.h>
@@ -22,48 +21,21 @@ using namespace sluice::testing;
 
 namespace {
 
-struct Ringing {
-    double p_ref = 0, mean = 0, noise = 0;
-};
-
-Ringing ringing_tank(const std::string& alpha) {
+TankRecord ringing_tank(const std::string& alpha) {
     const CaseConfig cfg = read_case(case_path("hydrostatic_2d.toml"),
                                      {"particles.dx=0.02", "blocks.0.hydrostatic=false",
                                       "time.end_time=1.0", "numerics.acoustic_damper=" + alpha});
-    SimulationOptions opts;
-    opts.threads = 1;
-    Simulation<2> sim(cfg, opts);
-    const auto& probe = cfg.probes.at(0);
-    const Vec<2> point(probe.position[0], probe.position[1]);
-    Ringing out;
-    out.p_ref = cfg.rho0 * std::abs(cfg.gravity[1]) * (cfg.blocks.at(0).hi[1] - point[1]);
-    double sum = 0, sum2 = 0;
-    int samples = 0;
-    double next = 0.002;
-    while (sim.time() < cfg.end_time - 1e-9) {
-        sim.step();
-        if (sim.time() < next - 1e-9)
-            continue;
-        next += 0.002;
-        if (sim.time() < 0.5 - 1e-9)
-            continue;
-        const double p = pressure_probe(sim.particles(), sim.kernel(), point);
-        sum += p;
-        sum2 += p * p;
-        ++samples;
-    }
-    REQUIRE(samples >= 200);
-    out.mean = sum / samples;
-    out.noise = std::sqrt(std::max(0.0, sum2 / samples - out.mean * out.mean));
-    return out;
+    const TankRecord r = tank_record(cfg, 0.002, 0.5);
+    REQUIRE(r.samples >= 200);
+    return r;
 }
 
 } // namespace
 
 TEST_CASE("Acoustic damper: a tank started at uniform density stops ringing, keeps its weight") {
     constexpr double kGuard = 1000; // Pa, between the two measured values
-    const Ringing off = ringing_tank("0");
-    const Ringing on = ringing_tank("0.5");
+    const TankRecord off = ringing_tank("0");
+    const TankRecord on = ringing_tank("0.5");
     std::printf("ringing tank, dx = 0.02 m, 0.5-1 s: p_ref = %.1f Pa; without the damper mean "
                 "%.1f Pa (%+.2f %%), std %.1f Pa; with alpha = 0.5 mean %.1f Pa (%+.2f %%), std "
                 "%.1f Pa; guard %.0f Pa\n",
