@@ -110,7 +110,7 @@ const KeySpec kKeys[] = {
     {"numerics", "shifting", "number", "", "0", closed(0, 20), Applies::wcsph, "",
      "Particle-shifting coefficient A (0 = off); displacement per step −A·U·h·dt·Σ(1 + 0.2(W/W(dx))⁴)∇W V with U the largest fluid speed (Sun et al."},
     {"numerics", "acoustic_damper", "number", "", "0", closed(0, 1), Applies::wcsph, "",
-     "Acoustic damper α (0 = off): a bulk viscosity ν_a = α·h·c₀ whose stress enters the pressure, p = p_EOS − ρ·ν_a·∇·u, with the SPH divergence of the velocity at the start of the step over fluid and wall partners (after Sun, Pilloton, Antuono & Colagrossi 2023)."},
+     "Acoustic damper α (0 = off): a bulk viscosity ν_a = α·h·c₀ whose stress enters the pressure, p = p_EOS − ρ·ν_a·∇·u, with the SPH divergence of the velocity at the start of the step over fluid and wall partners at rest (after Sun, Pilloton, Antuono & Colagrossi 2023)."},
     {"numerics", "cfl", "number", "", "0.25", open_closed(0, 1), Applies::any, "",
      "Acoustic limit dt ≤ cfl·h/(c₀ + |v|max); in (0, 1]."},
     {"numerics", "viscous_cfl", "number", "", "0.125", open_closed(0, 1), Applies::any, "",

@@ -12,8 +12,8 @@
 // same at any c0: alpha h k for a wave of wave number k. In still water div u = 0 and nothing
 // changes. The divergence is the plain SPH one with the difference form,
 //   (div u)_i = sum_j V_j (v_j - v_i) . grad_i W_ij,
-// over fluid and wall partners (a wall partner moves with its wall), from the velocities at
-// the start of the step.
+// over fluid and wall partners (walls are fixed: a wall partner's v_j = 0, as in the
+// continuity rate of density.hpp), from the velocities at the start of the step.
 #include "sluice/core/neighbourhood.hpp"
 #include "sluice/core/particles.hpp"
 #include "sluice/physics/kernels.hpp"
@@ -36,6 +36,7 @@ SLUICE_FLATTEN Real velocity_divergence(const Neighbourhood<D>& nb, const K& ker
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     const Real* const rho = P.rho.data();
     const Real* const mass = P.mass.data();
+    const Kind* const kind = P.kind.data();
     const Real* const v = P.v.data()->data();
     std::array<Real, D> vi;
     for (int d = 0; d < D; ++d)
@@ -46,9 +47,10 @@ SLUICE_FLATTEN Real velocity_divergence(const Neighbourhood<D>& nb, const K& ker
             Real Fij) -> std::array<Real, 1> {
             // grad_i W_ij = F dx with dx = x_i - x_j; the self pair adds nothing.
             const Real w = r2 > 0 ? mass[j] / rho[j] * Fij : Real(0);
+            const bool wall = kind[j] == Kind::wall;
             Real dv_dx = 0;
             for (int d = 0; d < D; ++d)
-                dv_dx += (v[D * j + d] - vi[d]) * dx[d];
+                dv_dx += ((wall ? Real(0) : v[D * j + d]) - vi[d]) * dx[d];
             return {w * dv_dx};
         });
     return sum[0];
