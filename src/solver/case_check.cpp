@@ -29,6 +29,39 @@ std::pair<double, double> height_range(const Triple& lo, const Triple& hi, const
     return {low, high};
 }
 
+// The key whose value sets the time step a run starts with.
+const char* time_step_key(const CaseConfig& cfg, const CaseInfo& info) {
+    if (cfg.fixed_dt)
+        return "numerics.dt";
+    if (info.dt_estimate == info.dt_acoustic)
+        return "numerics.cfl";
+    if (info.dt_estimate == info.dt_viscous)
+        return "numerics.viscous_cfl";
+    return "numerics.force_cfl";
+}
+
+// Every step must move the clock towards time.end_time. A limit can underflow to zero (a CFL
+// factor of 1e-320), be infinite (the projection scheme, whose CFL limit has no sound speed,
+// with the fluid at rest and neither gravity nor viscosity: nothing limits the step), or be
+// below end_time's resolution (t + dt == t): each would make the run spin or jump past the end.
+void check_clock_advances(const CaseConfig& cfg, const CaseInfo& info) {
+    const double dt = info.dt_estimate;
+    if (!std::isfinite(dt))
+        throw CaseError(cfg.source_file, "numerics.dt",
+                        "nothing limits the time step (no sound speed in the projection "
+                        "scheme's CFL limit, the fluid at rest, no gravity, no viscosity): give "
+                        "a fixed numerics.dt");
+    if (dt > 0 && cfg.end_time + dt > cfg.end_time)
+        return;
+    const bool end_too_far = dt >= min_useful_dt;
+    throw CaseError(cfg.source_file, end_too_far ? "time.end_time" : time_step_key(cfg, info),
+                    fmt::format("a time step of {:.4g} s (acoustic {:.4g} s, viscous {:.4g} s, "
+                                "force {:.4g} s) cannot advance the clock to time.end_time = "
+                                "{:.6g} s",
+                                dt, info.dt_acoustic, info.dt_viscous, info.dt_force,
+                                cfg.end_time));
+}
+
 } // namespace
 
 void check_runnable(const CaseConfig& cfg, const CaseInfo& info) {
@@ -54,6 +87,7 @@ void check_runnable(const CaseConfig& cfg, const CaseInfo& info) {
                                     "remove numerics.dt to let the solver choose",
                                     *cfg.fixed_dt, info.dt_stable, info.dt_acoustic,
                                     info.dt_viscous, info.dt_force));
+    check_clock_advances(cfg, info);
 }
 
 std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& info) {

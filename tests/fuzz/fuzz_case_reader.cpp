@@ -54,6 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         require(static_cast<double>(info.wall_particles) <= sluice::max_case_particles,
                 "wall particles within the limit");
         require(std::isfinite(info.dt_estimate) && info.dt_estimate > 0, "a finite dt > 0");
+        require(cfg.end_time + info.dt_estimate > cfg.end_time, "a step that advances the clock");
         require(std::isfinite(info.memory_bytes), "a finite memory estimate");
         require(cfg.dx > 0 && cfg.h_over_dx > 0 && cfg.end_time > 0, "positive scales");
     } catch (const sluice::CaseError&) {

@@ -157,6 +157,34 @@ TEST_CASE("the solver's refusals are made from the configuration alone") {
     }
 }
 
+TEST_CASE("a case whose time step cannot reach the end time is refused, naming the key") {
+    const auto refused_key = [](const std::vector<std::string>& sets) -> std::string {
+        const CaseConfig cfg = read_case_text(kCase, "check.toml", sets);
+        try {
+            check_runnable(cfg, describe_case(cfg));
+        } catch (const CaseError& e) {
+            return e.key();
+        }
+        return "";
+    };
+    // Each CFL factor at the smallest double underflows its limit to a step of zero.
+    CHECK(refused_key({"numerics.cfl=5e-324"}) == "numerics.cfl");
+    CHECK(refused_key({"numerics.viscous_cfl=5e-324"}) == "numerics.viscous_cfl");
+    CHECK(refused_key({"numerics.force_cfl=5e-324"}) == "numerics.force_cfl");
+    // The projection scheme's CFL limit has no sound speed: at rest, without gravity or
+    // viscosity, nothing limits the step...
+    const std::vector<std::string> still = {"numerics.scheme=\"projection\"",
+                                            "fluid.gravity=[0, 0]", "fluid.viscosity=0"};
+    CHECK(refused_key(still) == "numerics.dt");
+    // ... and a fixed step makes it runnable.
+    auto fixed = still;
+    fixed.emplace_back("numerics.dt=1e-3");
+    CHECK(refused_key(fixed).empty());
+    // A sane step below the end time's resolution: 1e300 s + 1.25e-4 s == 1e300 s.
+    CHECK(refused_key({"time.end_time=1e300"}) == "time.end_time");
+    CHECK(refused_key({"time.end_time=1e9"}).empty());
+}
+
 TEST_CASE("wall-plane normals of extreme magnitude are normalised without overflow") {
     const auto normal = [](const std::string& n) {
         const CaseConfig c = read_case_text(

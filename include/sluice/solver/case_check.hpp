@@ -11,7 +11,8 @@
 namespace sluice {
 
 // Throws CaseError for a case the solver would refuse (a fixed dt above the stability limit
-// at rest, a periodic axis shorter than three kernel supports). Allocates nothing.
+// at rest, a periodic axis shorter than three kernel supports) or that could not reach its
+// end time (a time step of zero, infinite, or below end_time's resolution). Allocates nothing.
 void check_runnable(const CaseConfig& cfg, const CaseInfo& info);
 
 struct CaseWarning {
