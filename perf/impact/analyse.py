@@ -2,7 +2,7 @@
 """Wall-impact pressure of finished sluice runs (issue 18), from their probe files alone.
 
     perf/impact/analyse.py DIR [DIR ...] [--out DIR] [--case CASE.toml] [--probe NAME=Y ...]
-                           [--window 0.5] [--filter-ms 1.0] [--no-plots]
+                           [--window 0.5] [--filter-ms 1.0] [--smooth-ms 10] [--no-plots]
 
 DIR is a study folder written by study.py (every run folder below it that holds a
 study_run.json is analysed) or a single run folder (one with probes/). For a run folder that
@@ -16,7 +16,8 @@ Definitions (all in README.md): rho g H and sqrt(H/g) scale pressure and time
 (p* = p/(rho0 g H), t* = t sqrt(g/H)); a dry probe (NaN) reads 0; the contact time is the
 first sample with p > 0.05 rho0 g H; the first-impact window is [t_c, t_c + WINDOW/sqrt(g/H)];
 the filtered signal is the centred moving average over FILTER_MS of time, from the
-trapezoidal cumulative integral of the irregularly sampled signal; the impulse is the
+trapezoidal cumulative integral of the irregularly sampled signal; the smooth peak is the
+filtered peak once more with the longer SMOOTH_MS (default 10 ms); the impulse is the
 trapezoidal integral of p dt over the window. Writes OUT/impact_convergence.csv (one row per
 run x probe), OUT/impact_convergence_pairs.csv (the convergence section) and, unless
 --no-plots, the PNGs of plot.py.
@@ -45,6 +46,8 @@ CONTACT_FRACTION = 0.05      # contact: p > 0.05 rho g H
 NEGATIVE_FRACTION = -0.5     # "below -0.5 rho g H"
 DEFAULT_WINDOW_STAR = 0.5    # first-impact window length in t* units
 DEFAULT_FILTER_S = 1.0e-3    # moving-average width in seconds
+DEFAULT_SMOOTH_S = 10.0e-3   # the second, longer average: WCSPH's peaks after it do not depend
+                             # on c0 (docs/IMPACT_LOADS.md, "The sound-speed ladder")
 EXP_T_MIN_STAR = 2.0         # contact search in the digitised records starts here (the PySPH
                              # copy has +-0.16 p* digitisation noise before t* = 1.9)
 RMS_RANGE_STAR = (2.0, 7.0)  # sim - experiment RMS range
@@ -167,16 +170,18 @@ class Scales:
 
 def impact_metrics(t: np.ndarray, p: np.ndarray, sc: Scales,
                    window_star: float = DEFAULT_WINDOW_STAR,
-                   filter_s: float = DEFAULT_FILTER_S, t_min: float = -math.inf) -> dict:
+                   filter_s: float = DEFAULT_FILTER_S, t_min: float = -math.inf,
+                   smooth_s: float = DEFAULT_SMOOTH_S) -> dict:
     """The first-impact figures of one pressure signal (t [s], p [Pa], NaN = dry)."""
     nan = float("nan")
     q = dry_as_zero(p)
     pf = moving_average(t, q, filter_s)
+    ps = moving_average(t, q, smooth_s)
     res = {"t_end_s": float(t[-1]), "t_end_star": float(t[-1] / sc.t), "samples": int(len(t)),
            "wet_fraction": float(np.mean(np.isfinite(p))) if len(p) else nan}
     keys = ["t_contact_s", "t_contact_star", "peak_raw_star", "t_peak_raw_star",
             "peak_filt_star", "t_peak_filt_star", "peak_raw_Pa", "peak_filt_Pa",
-            "impulse_Pa_s", "impulse_star", "window_complete", "min_raw_star", "min_filt_star",
+            "peak_smooth_star", "peak_smooth_Pa", "impulse_Pa_s", "impulse_star", "window_complete", "min_raw_star", "min_filt_star",
             "neg_longest_ms", "neg_total_ms", "neg_count"]
     res.update({k: nan for k in keys})
     hit = np.nonzero((q > CONTACT_FRACTION * sc.p) & (t >= t_min))[0]
@@ -196,6 +201,7 @@ def impact_metrics(t: np.ndarray, p: np.ndarray, sc: Scales,
         "peak_raw_star": float(q[ir] / sc.p), "t_peak_raw_star": float(t[ir] / sc.t),
         "peak_filt_star": float(pf[jf] / sc.p), "t_peak_filt_star": float(t[jf] / sc.t),
         "peak_raw_Pa": float(q[ir]), "peak_filt_Pa": float(pf[jf]),
+        "peak_smooth_star": float(ps[w].max() / sc.p), "peak_smooth_Pa": float(ps[w].max()),
         "impulse_Pa_s": imp, "impulse_star": imp / (sc.p * sc.t),
         "window_complete": bool(t[-1] >= te),
         "min_raw_star": float(q[after].min() / sc.p),
@@ -374,7 +380,7 @@ def discover(dirs: list[Path], case: dict, heights: dict[str, float],
 COLUMNS = ["variant", "run", "dx", "H_over_dx", "c0", "c0_factor", "end_time", "probe",
            "probe_x", "probe_y", "t_contact_s", "t_contact_star", "peak_raw_star",
            "t_peak_raw_star", "peak_filt_star", "t_peak_filt_star", "peak_raw_Pa", "peak_filt_Pa",
-           "impulse_Pa_s", "impulse_star", "window_complete", "min_raw_star", "min_filt_star",
+           "peak_smooth_star", "peak_smooth_Pa", "impulse_Pa_s", "impulse_star", "window_complete", "min_raw_star", "min_filt_star",
            "neg_longest_ms", "neg_total_ms", "neg_count", "wet_fraction", "samples",
            "exp_t_contact_star", "exp_peak_raw_star", "exp_t_peak_raw_star", "exp_peak_filt_star",
            "exp_impulse_star", "ratio_peak_raw", "ratio_peak_filt", "ratio_impulse",
@@ -430,7 +436,8 @@ class ProbeResult:
 
 
 def analyse_run(run: RunInfo, window_star: float = DEFAULT_WINDOW_STAR,
-                filter_s: float = DEFAULT_FILTER_S) -> list[ProbeResult]:
+                filter_s: float = DEFAULT_FILTER_S,
+                smooth_s: float = DEFAULT_SMOOTH_S) -> list[ProbeResult]:
     out = []
     exp_cache: dict[float, list[dict]] = {}
     for name, y in sorted(run.probes.items(), key=lambda kv: kv[1]):
@@ -440,7 +447,7 @@ def analyse_run(run: RunInfo, window_star: float = DEFAULT_WINDOW_STAR,
         t, p = load_probe(f)
         if len(t) < 2:
             continue
-        m = impact_metrics(t, p, run.scales, window_star, filter_s)
+        m = impact_metrics(t, p, run.scales, window_star, filter_s, smooth_s=smooth_s)
         key = round(y, 4)
         if key not in exp_cache:
             exp_cache[key] = experiment_metrics(y, run.scales, window_star, filter_s)
@@ -514,11 +521,16 @@ def ensemble_medians(results: list[ProbeResult]) -> list[ProbeResult]:
             out.append(g[0])
             continue
         med = dataclasses.replace(g[0], metrics=dict(g[0].metrics))
-        for k in ("peak_filt_star", "impulse_star"):
+        for k in ("peak_filt_star", "peak_smooth_star", "impulse_star"):
             vals = [x.metrics[k] for x in g if math.isfinite(x.metrics[k])]
             med.metrics[k] = statistics.median(vals) if vals else math.nan
         out.append(med)
     return out
+
+
+def _change(a: float, b: float) -> float:
+    """(b - a) / b, the change from the coarse a to the fine b; NaN where undefined."""
+    return (b - a) / b if b and math.isfinite(b) and math.isfinite(a) else math.nan
 
 
 def convergence_pairs(results: list[ProbeResult]) -> list[dict]:
@@ -540,9 +552,9 @@ def convergence_pairs(results: list[ProbeResult]) -> list[dict]:
                 g = sorted(g, key=lambda r: getattr(r.run, step_key), reverse=(kind == "dx"))
                 for a, b in zip(g, g[1:]):
                     pa, pb = a.metrics["peak_filt_star"], b.metrics["peak_filt_star"]
+                    sa, sb = a.metrics["peak_smooth_star"], b.metrics["peak_smooth_star"]
                     ia, ib = a.metrics["impulse_star"], b.metrics["impulse_star"]
-                    rel = (pb - pa) / pb if pb and math.isfinite(pb) and math.isfinite(pa) else math.nan
-                    reli = (ib - ia) / ib if ib and math.isfinite(ib) and math.isfinite(ia) else math.nan
+                    rel, rels, reli = _change(pa, pb), _change(sa, sb), _change(ia, ib)
                     if kind == "c0":
                         what = f"c0 {a.run.c0_factor:g}->{b.run.c0_factor:g} at H/{a.run.scales.H / gval:.0f}"
                         crit = (a.run.c0_factor, b.run.c0_factor) == (20, 40)
@@ -552,6 +564,7 @@ def convergence_pairs(results: list[ProbeResult]) -> list[dict]:
                         crit = (round(a.run.scales.H / a.run.dx), round(b.run.scales.H / b.run.dx)) == (60, 120)
                     pairs.append({"variant": variant, "probe": probe, "y": a.y, "step": kind,
                                   "what": what, "peak_a": pa, "peak_b": pb, "rel_change_peak": rel,
+                                  "smooth_a": sa, "smooth_b": sb, "rel_change_smooth": rels,
                                   "impulse_a": ia, "impulse_b": ib, "rel_change_impulse": reli,
                                   "criterion_pair": crit,
                                   "passes": (abs(rel) < CRITERION) if math.isfinite(rel) else None})
@@ -559,8 +572,9 @@ def convergence_pairs(results: list[ProbeResult]) -> list[dict]:
 
 
 def print_convergence(pairs: list[dict]) -> None:
-    print("\n== convergence: relative change of the filtered first-impact peak (and impulse), "
-          "(fine - coarse) / fine; issue 18 criterion |change| < 15 % for c0 20->40 and H/60->H/120")
+    print("\n== convergence: relative change of the filtered first-impact peak (and of the peak "
+          "after the longer average, and of the impulse), (fine - coarse) / fine; issue 18 "
+          "criterion |change| < 15 % of the filtered peak for c0 20->40 and H/60->H/120")
     if not pairs:
         print("   (no pairs: needs at least two c0 at one dx or two dx at one c0)")
         return
@@ -574,6 +588,7 @@ def print_convergence(pairs: list[dict]) -> None:
             flag = {True: "  PASS", False: "  FAIL", None: "  n/a"}[q["passes"]]
         print(f"      {q['what']:24s} peak {_fmt(q['peak_a'], '6.3f')} -> {_fmt(q['peak_b'], '6.3f')}"
               f"  {_fmt(100 * q['rel_change_peak'], '+7.1f')} %"
+              f"   longer average {_fmt(100 * q['rel_change_smooth'], '+7.1f')} %"
               f"   impulse {_fmt(100 * q['rel_change_impulse'], '+7.1f')} %{flag}")
 
 
@@ -586,7 +601,8 @@ def write_csv(path: Path, rows: list[dict], columns: list[str]) -> None:
             w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
 
 
-def wall_force_table(runs: list[RunInfo], window_star: float, filter_s: float) -> list[dict]:
+def wall_force_table(runs: list[RunInfo], window_star: float, filter_s: float,
+                     smooth_s: float = DEFAULT_SMOOTH_S) -> list[dict]:
     """First-impact figures of the horizontal force on the downstream wall (probe
     F_right_wall, N per metre of width), nondimensionalised by the hydrostatic force of the
     column rho g H^2 / 2: the load an engineer sizes a wall with, and one that spray cannot
@@ -601,6 +617,7 @@ def wall_force_table(runs: list[RunInfo], window_star: float, filter_s: float) -
         t, fx = d["time_s"], d["Fx_N"]
         scale = 0.5 * r.scales.rho0 * r.scales.g * r.scales.H**2
         ff = moving_average(t, fx, filter_s)
+        fs = moving_average(t, fx, smooth_s)
         hit = np.nonzero(ff > 0.05 * scale)[0]
         if len(hit) == 0:
             continue
@@ -609,27 +626,30 @@ def wall_force_table(runs: list[RunInfo], window_star: float, filter_s: float) -
         rows.append({"variant": r.variant, "run": r.label, "H_over_dx": r.scales.H / r.dx,
                      "c0_factor": r.c0_factor, "t_contact_star": tc / r.scales.t,
                      "peak_raw": float(fx[w].max() / scale), "peak_filt": float(ff[w].max() / scale),
+                     "peak_smooth": float(fs[w].max() / scale),
                      "impulse_star": integral(t, fx, tc, tc + window_star * r.scales.t)
                      / (scale * r.scales.t)})
     if rows:
         print(f"\n== horizontal force on the downstream wall (F_right_wall) over rho g H^2/2, "
-              f"first {window_star:g} t* after contact, filter {1e3 * filter_s:g} ms")
+              f"first {window_star:g} t* after contact, filter {1e3 * filter_s:g} ms "
+              f"(smooth: {1e3 * smooth_s:g} ms)")
         print(f"{'variant':12s} {'run':10s} {'H/dx':>5s} {'c0*':>4s} {'t*c':>6s} {'raw':>7s} "
-              f"{'filt':>7s} {'I*':>7s}")
+              f"{'filt':>7s} {'smooth':>7s} {'I*':>7s}")
         for x in rows:
             print(f"{x['variant']:12s} {x['run']:10s} {x['H_over_dx']:5.0f} {x['c0_factor']:4.0f} "
                   f"{x['t_contact_star']:6.2f} {x['peak_raw']:7.2f} {x['peak_filt']:7.2f} "
-                  f"{x['impulse_star']:7.3f}")
+                  f"{x['peak_smooth']:7.2f} {x['impulse_star']:7.3f}")
     return rows
 
 
 def analyse(runs: list[RunInfo], out: Path, window_star: float = DEFAULT_WINDOW_STAR,
-            filter_s: float = DEFAULT_FILTER_S, plots: bool = True) -> list[ProbeResult]:
+            filter_s: float = DEFAULT_FILTER_S, plots: bool = True,
+            smooth_s: float = DEFAULT_SMOOTH_S) -> list[ProbeResult]:
     """Analyses the runs, prints the tables, writes the CSVs and (optionally) the PNGs."""
     runs = sorted(runs, key=lambda r: (r.variant, -r.dx, r.c0_factor, r.label))
     results = []
     for r in runs:
-        results.extend(analyse_run(r, window_star, filter_s))
+        results.extend(analyse_run(r, window_star, filter_s, smooth_s))
     if not results:
         print("no pressure probe found")
         return results
@@ -638,13 +658,13 @@ def analyse(runs: list[RunInfo], out: Path, window_star: float = DEFAULT_WINDOW_
     print_experiment(runs[0].scales, window_star, filter_s)
     pairs = convergence_pairs(results)
     print_convergence(pairs)
-    forces = wall_force_table(runs, window_star, filter_s)
+    forces = wall_force_table(runs, window_star, filter_s, smooth_s)
     if forces:
         write_csv(out / "impact_wall_force.csv", forces, list(forces[0].keys()))
     write_csv(out / "impact_convergence.csv", [r.row() for r in results], COLUMNS)
     write_csv(out / "impact_convergence_pairs.csv", pairs,
               ["variant", "probe", "y", "step", "what", "peak_a", "peak_b", "rel_change_peak",
-               "impulse_a", "impulse_b", "rel_change_impulse", "criterion_pair", "passes"])
+               "smooth_a", "smooth_b", "rel_change_smooth", "impulse_a", "impulse_b", "rel_change_impulse", "criterion_pair", "passes"])
     print(f"\nwrote {out / 'impact_convergence.csv'} and {out / 'impact_convergence_pairs.csv'}")
     if plots:
         sys.path.insert(0, str(HERE))
@@ -670,6 +690,9 @@ def main(argv: list[str] | None = None) -> int:
                     help="first-impact window after contact, in t* units (default 0.5)")
     ap.add_argument("--filter-ms", type=float, default=1e3 * DEFAULT_FILTER_S,
                     help="moving-average width in ms (default 1)")
+    ap.add_argument("--smooth-ms", type=float, default=1e3 * DEFAULT_SMOOTH_S,
+                    help="width in ms of the second, longer moving average whose peak is "
+                    "reported beside the filtered one (default 10)")
     ap.add_argument("--no-plots", action="store_true")
     a = ap.parse_args(argv)
     heights = {}
@@ -691,7 +714,8 @@ def main(argv: list[str] | None = None) -> int:
     for r in runs:
         if r.inferred:
             print(f"   {r.folder}: {r.inferred}")
-    analyse(runs, out, a.window, 1e-3 * a.filter_ms, plots=not a.no_plots)
+    analyse(runs, out, a.window, 1e-3 * a.filter_ms, plots=not a.no_plots,
+            smooth_s=1e-3 * a.smooth_ms)
     return 0
 
 
