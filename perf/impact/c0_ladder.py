@@ -6,8 +6,9 @@
 
 Each CSV is one analyse.py output (`impact_convergence.csv`); its LABEL names the filter it was
 made with, e.g. `1ms=.../impact_convergence.csv 10ms=.../impact_convergence.csv` for
-`analyse.py STUDY --filter-ms 1` and `--filter-ms 10`. An `impact_wall_force.csv` given the
-same way adds the whole downstream wall's force (over rho g H^2 / 2) as the probe `wall_force`.
+`analyse.py STUDY --filter-ms 1` and `--filter-ms 10`; CSVs given the same label are merged.
+An `impact_wall_force.csv` given the same way adds the whole downstream wall's force (over
+rho g H^2 / 2) as the probe `wall_force`.
 For every label, probe and resolution it prints the median (min-max) over the ensemble of the
 filtered peak (`peak_filt_star`) and of the raw peak (`peak_raw_star`, from the first CSV that
 has the probe) at each c0 / sqrt(gH), and the change of the median between successive c0,
@@ -28,9 +29,11 @@ DEFAULT_PROBES = "y003mm_area,y030mm_area,y080mm_area,P1_area"
 WALL = "wall_force"  # the probe name given to the rows of an impact_wall_force.csv
 
 
-def load(path: Path, variant: str) -> dict:
-    """{(probe, H/dx): {c0_factor: [row, ...]}} of one analyse.py CSV."""
-    out: dict = defaultdict(lambda: defaultdict(list))
+def load(path: Path, variant: str, out: dict | None = None) -> dict:
+    """{(probe, H/dx): {c0_factor: [row, ...]}} of one analyse.py CSV, added to `out` if given
+    (CSVs of one label are merged: e.g. studies of different c0 or dx read the same way)."""
+    if out is None:
+        out = defaultdict(lambda: defaultdict(list))
     with open(path) as f:
         for r in csv.DictReader(f):
             if r["variant"] != variant:
@@ -71,12 +74,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--variant", default="default")
     ap.add_argument("--png", type=Path)
     a = ap.parse_args(argv)
-    sets = []
+    by_label: dict = {}
     for s in a.csvs:
         label, sep, path = s.partition("=")
         if not sep:
             ap.error(f"{s}: expected LABEL=CSV")
-        sets.append((label, load(Path(path), a.variant)))
+        by_label[label] = load(Path(path), a.variant, by_label.get(label))
+    sets = list(by_label.items())
     probes = a.probes.split(",")
     print("first-impact peak [rho g H]: median (min-max) of the ensemble at each c0 / sqrt(gH);"
           " [change of the median from the previous c0, (fine - coarse) / fine]")
