@@ -181,8 +181,9 @@ def impact_metrics(t: np.ndarray, p: np.ndarray, sc: Scales,
            "wet_fraction": float(np.mean(np.isfinite(p))) if len(p) else nan}
     keys = ["t_contact_s", "t_contact_star", "peak_raw_star", "t_peak_raw_star",
             "peak_filt_star", "t_peak_filt_star", "peak_raw_Pa", "peak_filt_Pa",
-            "peak_smooth_star", "peak_smooth_Pa", "impulse_Pa_s", "impulse_star", "window_complete", "min_raw_star", "min_filt_star",
-            "neg_longest_ms", "neg_total_ms", "neg_count"]
+            "peak_smooth_star", "peak_smooth_Pa", "impulse_Pa_s", "impulse_star",
+            "window_complete", "min_raw_star", "min_filt_star", "neg_longest_ms", "neg_total_ms",
+            "neg_count"]
     res.update({k: nan for k in keys})
     hit = np.nonzero((q > CONTACT_FRACTION * sc.p) & (t >= t_min))[0]
     if len(hit) == 0:
@@ -380,8 +381,8 @@ def discover(dirs: list[Path], case: dict, heights: dict[str, float],
 COLUMNS = ["variant", "run", "dx", "H_over_dx", "c0", "c0_factor", "end_time", "probe",
            "probe_x", "probe_y", "t_contact_s", "t_contact_star", "peak_raw_star",
            "t_peak_raw_star", "peak_filt_star", "t_peak_filt_star", "peak_raw_Pa", "peak_filt_Pa",
-           "peak_smooth_star", "peak_smooth_Pa", "impulse_Pa_s", "impulse_star", "window_complete", "min_raw_star", "min_filt_star",
-           "neg_longest_ms", "neg_total_ms", "neg_count", "wet_fraction", "samples",
+           "peak_smooth_star", "peak_smooth_Pa", "impulse_Pa_s", "impulse_star",
+           "window_complete", "min_raw_star", "min_filt_star", "neg_longest_ms", "neg_total_ms", "neg_count", "wet_fraction", "samples",
            "exp_t_contact_star", "exp_peak_raw_star", "exp_t_peak_raw_star", "exp_peak_filt_star",
            "exp_impulse_star", "ratio_peak_raw", "ratio_peak_filt", "ratio_impulse",
            "dt_peak_star", "rms_2_7", "rms_2_end", "rms_hi_star", "wall_s", "steps", "inferred"]
@@ -535,7 +536,7 @@ def _change(a: float, b: float) -> float:
 
 def convergence_pairs(results: list[ProbeResult]) -> list[dict]:
     """For each variant and probe: the relative change of the filtered peak (and of the
-    impulse) between successive c0 at each dx, and between successive dx at each c0,
+    smooth peak and the impulse) between successive c0 at each dx, and between successive dx at each c0,
     relative to the stiffer / finer run: (P_b - P_a) / P_b; ensembles by their medians."""
     by = {}
     for r in results:
