@@ -382,7 +382,8 @@ COLUMNS = ["variant", "run", "dx", "H_over_dx", "c0", "c0_factor", "end_time", "
            "probe_x", "probe_y", "t_contact_s", "t_contact_star", "peak_raw_star",
            "t_peak_raw_star", "peak_filt_star", "t_peak_filt_star", "peak_raw_Pa", "peak_filt_Pa",
            "peak_smooth_star", "peak_smooth_Pa", "impulse_Pa_s", "impulse_star",
-           "window_complete", "min_raw_star", "min_filt_star", "neg_longest_ms", "neg_total_ms", "neg_count", "wet_fraction", "samples",
+           "window_complete", "min_raw_star", "min_filt_star", "neg_longest_ms", "neg_total_ms",
+           "neg_count", "wet_fraction", "samples",
            "exp_t_contact_star", "exp_peak_raw_star", "exp_t_peak_raw_star", "exp_peak_filt_star",
            "exp_impulse_star", "ratio_peak_raw", "ratio_peak_filt", "ratio_impulse",
            "dt_peak_star", "rms_2_7", "rms_2_end", "rms_hi_star", "wall_s", "steps", "inferred"]
@@ -536,8 +537,9 @@ def _change(a: float, b: float) -> float:
 
 def convergence_pairs(results: list[ProbeResult]) -> list[dict]:
     """For each variant and probe: the relative change of the filtered peak (and of the
-    smooth peak and the impulse) between successive c0 at each dx, and between successive dx at each c0,
-    relative to the stiffer / finer run: (P_b - P_a) / P_b; ensembles by their medians."""
+    smooth peak and the impulse) between successive c0 at each dx, and between successive dx
+    at each c0, relative to the stiffer / finer run: (P_b - P_a) / P_b; ensembles by their
+    medians."""
     by = {}
     for r in results:
         by.setdefault((r.run.variant, r.probe), []).append(r)
@@ -665,7 +667,8 @@ def analyse(runs: list[RunInfo], out: Path, window_star: float = DEFAULT_WINDOW_
     write_csv(out / "impact_convergence.csv", [r.row() for r in results], COLUMNS)
     write_csv(out / "impact_convergence_pairs.csv", pairs,
               ["variant", "probe", "y", "step", "what", "peak_a", "peak_b", "rel_change_peak",
-               "smooth_a", "smooth_b", "rel_change_smooth", "impulse_a", "impulse_b", "rel_change_impulse", "criterion_pair", "passes"])
+               "smooth_a", "smooth_b", "rel_change_smooth", "impulse_a", "impulse_b",
+               "rel_change_impulse", "criterion_pair", "passes"])
     print(f"\nwrote {out / 'impact_convergence.csv'} and {out / 'impact_convergence_pairs.csv'}")
     if plots:
         sys.path.insert(0, str(HERE))
