@@ -176,7 +176,12 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     figures.resumed = resumed;
     figures.earlier_wall_seconds = start.wall_seconds;
     figures.threads = threads;
-    const RunTotals at_start = run_totals<D>(sim, figures.support, figures.crowded);
+    // The initial state's probes and snapshot, before the totals: the snapshot's spacing
+    // census is the one the totals want (not taken twice), and the time loop's wall time
+    // starts after it, as it starts after the rest of the start-up.
+    outputs.sample(sim, false);
+    const RunTotals at_start =
+        run_totals<D>(sim, figures.support, figures.crowded, outputs.spacing_at(sim.steps()));
     result.particles = at_start.particles;
     result.fluid_particles = at_start.fluid;
     result.mass_initial = at_start.mass;
@@ -202,7 +207,6 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     tasks::reset_clock_origin();
     t0 = Clock::now();
     RunRequests requests(opts.out_dir, cfg.checkpoint_every_minutes, root);
-    outputs.sample(sim, false);
     while (sim.time() < cfg.end_time * (1 - 1e-12)) {
         // Requests go into the next step's reduction, so every rank acts on them together.
         sim.post_request(requests.pending());
@@ -279,7 +283,8 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
     result.simulated_time = sim.time();
     result.particle_steps_per_second = particle_steps / result.wall_seconds;
     log_memory("after the time loop");
-    const RunTotals at_end = run_totals<D>(sim, figures.support, figures.crowded);
+    const RunTotals at_end =
+        run_totals<D>(sim, figures.support, figures.crowded, outputs.spacing_at(sim.steps()));
     result.mass_final = at_end.mass;
     result.fluid_removed = sim.removed_particles();
     if (result.fluid_removed > 0)

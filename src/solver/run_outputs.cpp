@@ -102,6 +102,7 @@ std::string RunOutputs<D>::write_snapshot(const Simulation<D>& sim) {
     }
     const SnapshotSpacing spacing{census.census, crowded, over_dx};
     last_spacing_ = census.census;
+    spacing_step_ = sim.steps();
     return snapshots_->write(sim.particles(), sim.owned(), sim.time(), sim.steps(), &spacing);
 }
 

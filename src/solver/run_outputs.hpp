@@ -36,6 +36,12 @@ public:
     std::string last_snapshot(const Simulation<D>& sim, const std::string& label);
     // The fluid's spacing census of the last snapshot written (every rank's counts together).
     [[nodiscard]] const NeighbourCensus& last_spacing() const { return last_spacing_; }
+    // That census if the last snapshot was written at `step` (the state the caller holds:
+    // every step changes it), so the run's totals need not take it again; otherwise null.
+    // Its support and threshold are the run's: the kernel's support, crowded_below(dx).
+    [[nodiscard]] const NeighbourCensus* spacing_at(long step) const {
+        return spacing_step_ == step ? &last_spacing_ : nullptr;
+    }
     // Collective: the particles, the solver's state and this record of the outputs;
     // `wall_seconds` is every segment's time loop so far.
     void write_checkpoint(const Simulation<D>& sim, double wall_seconds);
@@ -52,6 +58,7 @@ private:
     std::unique_ptr<SnapshotWriter<D>> snapshots_;
     std::unique_ptr<ProbeWriter> probe_files_;
     NeighbourCensus last_spacing_;
+    long spacing_step_ = -1; // the step of the state last_spacing_ counted
     // Collective: the next snapshot, with the fluid's spacing (spacing_census.hpp).
     std::string write_snapshot(const Simulation<D>& sim);
 };

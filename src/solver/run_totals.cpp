@@ -9,14 +9,15 @@
 namespace sluice {
 
 template <int D>
-RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded) {
+RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded,
+                     const NeighbourCensus* known) {
     const tasks::Comm& comm = sim.comm();
     const Particles<D>& P = sim.particles();
     const std::size_t n = sim.owned();
     RunTotals t;
     // The census counts every particle once, on the owner of its cell: its totals are every
     // rank's particle counts together.
-    t.census = spacing_census<D>(sim, support, crowded, false).census;
+    t.census = known != nullptr ? *known : spacing_census<D>(sim, support, crowded, false).census;
     t.particles = t.census.fluid + t.census.wall;
     t.fluid = t.census.fluid;
     std::vector<std::pair<ParticleId, Real>> masses;
@@ -51,7 +52,7 @@ RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded) {
     return t;
 }
 
-template RunTotals run_totals<2>(const Simulation<2>&, Real, Real);
-template RunTotals run_totals<3>(const Simulation<3>&, Real, Real);
+template RunTotals run_totals<2>(const Simulation<2>&, Real, Real, const NeighbourCensus*);
+template RunTotals run_totals<3>(const Simulation<3>&, Real, Real, const NeighbourCensus*);
 
 } // namespace sluice

@@ -17,11 +17,14 @@ struct RunTotals {
 
 // Collective. Counts and census on every rank; the mass on rank 0 (which receives 16 bytes per
 // fluid particle: the ids and masses that Particles::total_mass sums, in its order, so the
-// figure has the same bits on any layout). The census: spacing_census (spacing_census.hpp).
+// figure has the same bits on any layout). The census: spacing_census (spacing_census.hpp),
+// or `known` when the caller holds this state's census with the same support and threshold
+// (a snapshot just written took it: RunOutputs::spacing_at).
 template <int D>
-RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded);
+RunTotals run_totals(const Simulation<D>& sim, Real support, Real crowded,
+                     const NeighbourCensus* known = nullptr);
 
-extern template RunTotals run_totals<2>(const Simulation<2>&, Real, Real);
-extern template RunTotals run_totals<3>(const Simulation<3>&, Real, Real);
+extern template RunTotals run_totals<2>(const Simulation<2>&, Real, Real, const NeighbourCensus*);
+extern template RunTotals run_totals<3>(const Simulation<3>&, Real, Real, const NeighbourCensus*);
 
 } // namespace sluice

@@ -20,7 +20,7 @@ n=$(ls "$out"/snapshots/snap_*.h5 2>/dev/null | wc -l)
 # The fluid's spacing in every snapshot: at t = 0 the lattice, every fluid particle dx from its
 # nearest fluid neighbour, less the hydrostatic start's compression (rho/rho0 - 1 up to
 # g H / c0^2 = 0.0025 at the bottom: rows down to 0.9975 dx); walls NaN; in every snapshot the
-# attributes count what the field shows.
+# attributes count what the field shows, and summary.json reports the first and last ones.
 /usr/bin/python3 - "$out" <<'PY' || fail "snapshot spacing"
 import glob, math, sys
 import h5py
@@ -44,6 +44,19 @@ for k, name in enumerate(files):
             bad.append(f"{name}: crowded_below {a['crowded_below']}")
         if abs(a["closest_fluid_pair"] / dx - np.nanmin(s[fluid])) > 1e-9:
             bad.append(f"{name}: closest pair {a['closest_fluid_pair']} against the field")
+# summary.json's census at the start and the end is the one the first and last snapshots
+# took of the same states (the run takes it once there and reports it in both places).
+import json
+with open(f"{sys.argv[1]}/summary.json") as f:
+    census = json.load(f)["extra"]["neighbours"]
+for when, name in (("start", files[0]), ("end", files[-1])):
+    with h5py.File(name) as f:
+        a = f.attrs
+        for key in ("fluid_particles", "fluid_crowded", "fluid_isolated"):
+            if census[when][key] != int(a[key]):
+                bad.append(f"summary {when} {key} {census[when][key]}, {name} {int(a[key])}")
+        if census[when]["closest_fluid_pair"] != float(a["closest_fluid_pair"]):
+            bad.append(f"summary {when} closest pair differs from {name}'s")
 print("\n".join(bad))
 sys.exit(1 if bad or len(files) != 3 else 0)
 PY
