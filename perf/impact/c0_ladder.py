@@ -8,7 +8,10 @@ Each CSV is one analyse.py output (`impact_convergence.csv`); its LABEL names th
 made with, e.g. `1ms=.../impact_convergence.csv 10ms=.../impact_convergence.csv` for
 `analyse.py STUDY --filter-ms 1` and `--filter-ms 10`; CSVs given the same label are merged.
 An `impact_wall_force.csv` given the same way adds the whole downstream wall's force (over
-rho g H^2 / 2) as the probe `wall_force`.
+rho g H^2 / 2) as the probe `wall_force`. A CSV from analyse.py since session 44 also carries
+the peak after its second, longer average (`peak_smooth_star`, analyse.py --smooth-ms, 10 ms by
+default): it is printed and plotted as the line `smooth average` from the first CSV that has
+the probe, so one analyse.py run gives the 1 ms and the 10 ms ladders.
 For every label, probe and resolution it prints the median (min-max) over the ensemble of the
 filtered peak (`peak_filt_star`) and of the raw peak (`peak_raw_star`, from the first CSV that
 has the probe) at each c0 / sqrt(gH), and the change of the median between successive c0,
@@ -39,7 +42,8 @@ def load(path: Path, variant: str, out: dict | None = None) -> dict:
             if r["variant"] != variant:
                 continue
             if "probe" not in r:  # an impact_wall_force.csv: the whole downstream wall's force
-                r = dict(r, probe=WALL, peak_filt_star=r["peak_filt"], peak_raw_star=r["peak_raw"])
+                r = dict(r, probe=WALL, peak_filt_star=r["peak_filt"], peak_raw_star=r["peak_raw"],
+                         peak_smooth_star=r.get("peak_smooth", ""))
             out[(r["probe"], round(float(r["H_over_dx"])))][float(r["c0_factor"])].append(r)
     return out
 
@@ -48,7 +52,7 @@ def ladder(rows_by_c0: dict, key: str) -> list[tuple[float, float, float, float,
     """(c0, median, min, max, n) of `key` at each c0, c0 ascending; NaN values skipped."""
     out = []
     for c0 in sorted(rows_by_c0):
-        v = [float(r[key]) for r in rows_by_c0[c0]]
+        v = [float(r[key]) for r in rows_by_c0[c0] if r.get(key)]
         v = [x for x in v if x == x]
         if v:
             out.append((c0, statistics.median(v), min(v), max(v), len(v)))
@@ -100,6 +104,10 @@ def main(argv: list[str] | None = None) -> int:
                     lad = ladder(d[(probe, h)], "peak_filt_star")
                     print_ladder(f"{label} average", lad)
                     lines.append((f"{label} average", lad))
+            smooth = ladder(first, "peak_smooth_star") if first else []
+            if smooth:  # CSVs older than session 44 have no such column
+                print_ladder("smooth average", smooth)
+                lines.append(("smooth average", smooth))
             panels.append((f"{probe}, H/{h}", lines))
     if a.png and panels:
         import matplotlib  # noqa: PLC0415 (only when plotting)
