@@ -10,8 +10,9 @@ made with, e.g. `1ms=.../impact_convergence.csv 10ms=.../impact_convergence.csv`
 An `impact_wall_force.csv` given the same way adds the whole downstream wall's force (over
 rho g H^2 / 2) as the probe `wall_force`. A CSV from analyse.py since session 44 also carries
 the peak after its second, longer average (`peak_smooth_star`, analyse.py --smooth-ms, 10 ms by
-default): it is printed and plotted as the line `smooth average` from the first CSV that has
-the probe, so one analyse.py run gives the 1 ms and the 10 ms ladders.
+default): it is printed and plotted as the line `10ms average` (`--smooth-label`: name the
+width the CSV was made with) from the first CSV that has the probe, so one analyse.py run
+gives the 1 ms and the 10 ms ladders.
 For every label, probe and resolution it prints the median (min-max) over the ensemble of the
 filtered peak (`peak_filt_star`) and of the raw peak (`peak_raw_star`, from the first CSV that
 has the probe) at each c0 / sqrt(gH), and the change of the median between successive c0,
@@ -77,6 +78,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--probes", default=DEFAULT_PROBES, help=f"default {DEFAULT_PROBES}")
     ap.add_argument("--variant", default="default")
     ap.add_argument("--png", type=Path)
+    ap.add_argument("--smooth-label", default="10ms",
+                    help="label of peak_smooth_star's line (analyse.py --smooth-ms; default 10ms)")
     a = ap.parse_args(argv)
     by_label: dict = {}
     for s in a.csvs:
@@ -106,8 +109,8 @@ def main(argv: list[str] | None = None) -> int:
                     lines.append((f"{label} average", lad))
             smooth = ladder(first, "peak_smooth_star") if first else []
             if smooth:  # CSVs older than session 44 have no such column
-                print_ladder("smooth average", smooth)
-                lines.append(("smooth average", smooth))
+                print_ladder(f"{a.smooth_label} average", smooth)
+                lines.append((f"{a.smooth_label} average", smooth))
             panels.append((f"{probe}, H/{h}", lines))
     if a.png and panels:
         import matplotlib  # noqa: PLC0415 (only when plotting)
