@@ -2,6 +2,7 @@
 #include "sluice/io/checkpoint.hpp"
 
 #include "sluice/io/errors.hpp"
+#include "sluice/physics/timestep.hpp"
 #include "sluice/version.hpp"
 
 #include "h5_parallel.hpp"
@@ -343,7 +344,9 @@ Checkpoint<D> read_h5(const h5::World& w, const std::string& path,
     c.output.out_next = real("out_next");
     c.output.last_output_time = real("last_output_time");
     c.output.wall_seconds = real("wall_seconds");
-    if (!(s.dt > 0) || !std::isfinite(s.time) || s.step < 0)
+    // The run goes on from this step with this dt: one that cannot move the clock (infinite,
+    // zero, NaN, or lost in t's rounding) would make it spin or jump past its end.
+    if (!std::isfinite(s.time) || !step_advances_clock(s.time, s.dt) || s.step < 0)
         throw Refused(
             fmt::format("implausible state: step {}, t = {}, dt = {}", s.step, s.time, s.dt));
 

@@ -4,6 +4,7 @@
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/initial_profiles.hpp"
 #include "sluice/physics/kernels.hpp"
+#include "sluice/physics/timestep.hpp"
 #include "sluice/solver/built_geometry.hpp"
 
 #include <fmt/format.h>
@@ -51,7 +52,7 @@ void check_clock_advances(const CaseConfig& cfg, const CaseInfo& info) {
                         "nothing limits the time step (no sound speed in the projection "
                         "scheme's CFL limit, the fluid at rest, no gravity, no viscosity): give "
                         "a fixed numerics.dt");
-    if (dt > 0 && cfg.end_time + dt > cfg.end_time)
+    if (step_advances_clock(cfg.end_time, dt))
         return;
     const bool end_too_far = dt >= min_useful_dt;
     throw CaseError(cfg.source_file, end_too_far ? "time.end_time" : time_step_key(cfg, info),

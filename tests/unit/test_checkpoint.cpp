@@ -18,6 +18,8 @@
 #include <limits>
 #include <string>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 using namespace sluice;
 namespace fs = std::filesystem;
@@ -228,6 +230,24 @@ TEST_CASE("checkpoints that cannot continue the case are refused with the reason
         f.put(static_cast<char>(byte ^ 0x10));
         f.close();
         CHECK(contains(refusal<2>(p, c.case_fingerprint), "damaged"));
+    }
+    SUBCASE("a solver state whose time step cannot move the clock") {
+        // Written by a damaged or hand-made file: the run would spin (dt = 0, NaN, or lost in
+        // t's rounding) or jump past its end (dt = inf) instead of stopping.
+        const double inf = std::numeric_limits<double>::infinity();
+        for (const auto& [t, dt] : std::vector<std::pair<double, double>>{
+                 {0.5, inf}, {0.5, std::nan("")}, {0.5, 0.0}, {0.5, -1e-4}, {1e300, 1e-4}}) {
+            auto bad = c;
+            bad.solver.time = t;
+            bad.solver.dt = dt;
+            const std::string p = (dir.path / "clock.h5").string();
+            write_checkpoint<2>(p, bad);
+            CAPTURE(t);
+            CAPTURE(dt);
+            CHECK(contains(refusal<2>(p, c.case_fingerprint), "implausible state"));
+        }
+        // The sample's own clock (t, dt) is accepted.
+        CHECK(read_checkpoint<2>(good, c.case_fingerprint).solver.dt == c.solver.dt);
     }
     SUBCASE("not a checkpoint") {
         const std::string text = (dir.path / "text.h5").string();

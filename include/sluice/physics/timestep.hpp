@@ -71,6 +71,13 @@ inline double cfl_sound_speed(bool incompressible, double c0) {
     return incompressible ? 0.0 : c0;
 }
 
+// Whether a step dt taken at time t moves the clock: finite, positive and not lost in t's
+// rounding (t + dt > t). A limit can underflow to zero, be infinite (nothing limits the
+// step), or be below t's resolution: each would make a run spin or jump past its end.
+inline bool step_advances_clock(double t, double dt) {
+    return std::isfinite(dt) && dt > 0 && t + dt > t;
+}
+
 inline TimeStepLimits min(const TimeStepLimits& a, const TimeStepLimits& b) {
     return {std::min(a.acoustic, b.acoustic), std::min(a.viscous, b.viscous),
             std::min(a.force, b.force)};
