@@ -11,7 +11,8 @@ An `impact_wall_force.csv` given the same way adds the whole downstream wall's f
 rho g H^2 / 2) as the probe `wall_force`. A CSV from analyse.py since session 44 also carries
 the peak after its second, longer average (`peak_smooth_star`, analyse.py --smooth-ms, 10 ms by
 default): it is printed and plotted as the line `10ms average` (`--smooth-label`: name the
-width the CSV was made with) from the first CSV that has the probe, so one analyse.py run
+width the CSV was made with; left out when a label of that name is given) from the first CSV
+that has the probe, so one analyse.py run
 gives the 1 ms and the 10 ms ladders.
 For every label, probe and resolution it prints the median (min-max) over the ensemble of the
 filtered peak (`peak_filt_star`) and of the raw peak (`peak_raw_star`, from the first CSV that
@@ -107,7 +108,10 @@ def main(argv: list[str] | None = None) -> int:
                     lad = ladder(d[(probe, h)], "peak_filt_star")
                     print_ladder(f"{label} average", lad)
                     lines.append((f"{label} average", lad))
-            smooth = ladder(first, "peak_smooth_star") if first else []
+            # Not when a label already gives that average (e.g. 10ms=... made with
+            # --filter-ms 10): the line would be printed twice.
+            smooth = (ladder(first, "peak_smooth_star")
+                      if first and a.smooth_label not in by_label else [])
             if smooth:  # CSVs older than session 44 have no such column
                 print_ladder(f"{a.smooth_label} average", smooth)
                 lines.append((f"{a.smooth_label} average", smooth))
