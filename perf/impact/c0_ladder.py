@@ -12,8 +12,7 @@ rho g H^2 / 2) as the probe `wall_force`. A CSV from analyse.py since session 44
 the peak after its second, longer average (`peak_smooth_star`, analyse.py --smooth-ms, 10 ms by
 default): it is printed and plotted as the line `10ms average` (`--smooth-label`: name the
 width the CSV was made with; left out when a label of that name is given) from the first CSV
-that has the probe, so one analyse.py run
-gives the 1 ms and the 10 ms ladders.
+that has the probe, so one analyse.py run gives the 1 ms and the 10 ms ladders.
 For every label, probe and resolution it prints the median (min-max) over the ensemble of the
 filtered peak (`peak_filt_star`) and of the raw peak (`peak_raw_star`, from the first CSV that
 has the probe) at each c0 / sqrt(gH), and the change of the median between successive c0,
