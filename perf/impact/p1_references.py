@@ -156,8 +156,8 @@ def _f(v: float, spec: str = "5.2f") -> str:
 
 def report(rows: list[dict], smooth_ms: float) -> str:
     w = [f"{lo:g}-{hi:g}" for lo, hi in WINDOWS]
-    lines = [f"== P1 (0.16 m) against the record and three other codes; sluice and TrixiParticles "
-             f"averaged over {smooth_ms:g} ms",
+    lines = [f"== Buchner's sensor P1: the record, three other codes and sluice's probes (column "
+             f"'sampled'); sluice and TrixiParticles averaged over {smooth_ms:g} ms",
              f"   mean p/(rho g H) over t* windows; first max over t* {FIRST_PEAK_RANGE[0]:g}-"
              f"{FIRST_PEAK_RANGE[1]:g}; second max over {SECOND_PEAK_RANGE[0]:g}-"
              f"{SECOND_PEAK_RANGE[1]:g}; RMS over t* {RMS_RANGE[0]:g}-{RMS_RANGE[1]:g} where both exist",
@@ -180,11 +180,19 @@ def plot(series: list[Series], png: Path, smooth_ms: float) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(11, 5.5))
-    style = {"record": dict(ls="none", marker="o", ms=2.5), "code": dict(lw=1.4, ls="--"),
-             "sluice": dict(lw=1.6)}
+    # references in dark tones (records dotted, codes dashed), sluice in the colour cycle
+    dark = iter(["black", "dimgray", "saddlebrown", "darkmagenta", "darkcyan", "darkolivegreen",
+                 "navy", "maroon"])
+    cycle = iter(plt.rcParams["axes.prop_cycle"].by_key()["color"] * 4)
     for s in series:
         m = (s.t >= 2.2) & (s.t <= 7.1)
-        ax.plot(s.t[m], s.p[m], label=f"{s.label} ({s.height})", **style[s.kind])
+        if s.kind == "record":
+            kw = dict(ls="none", marker="o", ms=2.5, color=next(dark))
+        elif s.kind == "code":
+            kw = dict(lw=1.4, ls="--", color=next(dark))
+        else:
+            kw = dict(lw=1.2, color=next(cycle))
+        ax.plot(s.t[m], s.p[m], label=f"{s.label} ({s.height})", **kw)
     ax.set_xlabel("t* = t sqrt(g/H)")
     ax.set_ylabel("p / (rho g H)")
     ax.set_title(f"Zhou/Buchner P1: record, three other codes, sluice ({smooth_ms:g} ms average)")
