@@ -35,8 +35,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h> // getpid: a folder of its own when suites run side by side
-
 using namespace sluice;
 using namespace sluice::testing;
 
@@ -67,16 +65,9 @@ struct ImpulseBalance {
 // leapfrog: the force sampled at t_k acts for (dt_{k-1} + dt_k)/2 (WCSPH's integrator);
 // otherwise the force sampled after step k acts for dt_k (the projection step).
 ImpulseBalance impulse_balance(const CaseConfig& cfg, const std::string& tag, bool leapfrog) {
-    const std::string out =
-        (std::filesystem::temp_directory_path() /
-         ("sluice_test_wall_loads_block_impact_" + tag + "_" + std::to_string(::getpid())))
-            .string();
-    std::filesystem::remove_all(out);
-    RunOptions opts;
-    opts.out_dir = out;
-    opts.threads = 1;
-    opts.quiet = true;
-    const RunResult result = run_case(cfg, opts);
+    const FolderRun run = run_in_temp_folder(cfg, "wall_loads_block_impact_" + tag, 1);
+    const std::string& out = run.folder;
+    const RunResult& result = run.result;
     const auto rows = read_csv(out + "/probes/wall.csv");
 
     SimulationOptions so;

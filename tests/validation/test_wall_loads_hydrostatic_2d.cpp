@@ -26,8 +26,6 @@
 #include <sstream>
 #include <string>
 
-#include <unistd.h> // getpid: a folder of its own when suites run side by side
-
 using namespace sluice;
 using namespace sluice::testing;
 
@@ -55,15 +53,7 @@ struct Check {
 // Runs `cfg` and checks every probe of `checks` from 0.5 s on; returns the results folder.
 std::string run_and_check(const CaseConfig& cfg, const std::string& label,
                           std::initializer_list<Check> checks) {
-    const std::string out = (std::filesystem::temp_directory_path() /
-                             ("sluice_test_wall_loads_" + label + "_" + std::to_string(::getpid())))
-                                .string();
-    std::filesystem::remove_all(out);
-    RunOptions opts;
-    opts.out_dir = out;
-    opts.threads = 2;
-    opts.quiet = true;
-    run_case(cfg, opts);
+    const std::string out = run_in_temp_folder(cfg, "wall_loads_" + label, 2).folder;
     for (const auto& c : checks) {
         int rows = 0;
         const double w = worst(out + "/probes/" + c.probe + ".csv", c.col, c.ref, 0.5, rows);

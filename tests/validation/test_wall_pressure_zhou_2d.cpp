@@ -7,7 +7,7 @@
 // the wall) and 5.0-6.0 (before the second impact), and the arrival of the second impact (the
 // first t* after 5.5 where the 10 ms average exceeds 0.75 rho g H). Measured (session 46, one
 // thread): this run reads 0.377 and 0.441 rho g H and t* = 6.33, against De Courcy's 0.363,
-// 0.465 and 6.31. Four runs of perf/impact/run.sh at H/30 (c0 = 20 sqrt(gH) = 48.522 m/s where
+// 0.465 and 6.32. Four runs of perf/impact/run.sh at H/30 (c0 = 20 sqrt(gH) = 48.522 m/s where
 // the case says 48.52, lattice jitter 0 to 0.01 dx) read 0.367-0.383, 0.459-0.484 and
 // 6.16-6.41: that is how far a harmless change moves these figures. Guards: 0.05 rho g H and
 // 0.25 t*. At H/60 sluice reads 0.371, 0.470 and 6.35, and TrixiParticles.jl at H/400 (WCSPH
@@ -17,8 +17,6 @@
 // impact arrives at t* = 5.81: the four simulations agree with each other and not with the
 // record there (docs/IMPACT_LOADS.md, "P1 against three other codes"). The test prints that gap;
 // it guards sluice's agreement with an independent code, not a match with the record.
-#include "sluice/io/case_reader.hpp"
-#include "sluice/solver/run.hpp"
 #include "validation_support.hpp"
 
 #include <doctest/doctest.h>
@@ -29,8 +27,6 @@
 #include <filesystem>
 #include <string>
 #include <vector>
-
-#include <unistd.h> // getpid: a folder of its own when suites run side by side
 
 using namespace sluice;
 using namespace sluice::testing;
@@ -99,17 +95,9 @@ TEST_CASE("Zhou/Buchner wall pressure at P1 (0.16 m) agrees with De Courcy et al
     const CaseConfig cfg =
         read_case(root + "/perf/impact/zhou_2d.toml",
                   {"particles.dx=0.02", "time.end_time=1.65", "output.snapshots=false"});
-    const std::string out = (std::filesystem::temp_directory_path() /
-                             ("sluice_test_wall_pressure_zhou_" + std::to_string(::getpid())))
-                                .string();
-    std::filesystem::remove_all(out);
-    RunOptions opts;
-    opts.out_dir = out;
-    opts.threads = 1;
-    opts.quiet = true;
-    const RunResult result = run_case(cfg, opts);
-    const Signal sim = read_signal(out + "/probes/P1_area.csv", t_scale, 1.0 / p_scale);
-    std::filesystem::remove_all(out);
+    const FolderRun run = run_in_temp_folder(cfg, "wall_pressure_zhou", 1);
+    const Signal sim = read_signal(run.folder + "/probes/P1_area.csv", t_scale, 1.0 / p_scale);
+    std::filesystem::remove_all(run.folder);
 
     const std::string data = root + "/perf/impact/data/";
     const Signal code = read_signal(data + "decourcy2024_y160mm_sim.csv", 1.0, 1.0);
@@ -130,7 +118,7 @@ TEST_CASE("Zhou/Buchner wall pressure at P1 (0.16 m) agrees with De Courcy et al
                 "  De Courcy 2024  %.3f / %.3f  t* = %.2f\n"
                 "  Buchner record  %.3f / %.3f  t* = %.2f  (not a guard: the codes agree with each "
                 "other, not with it)\n",
-                result.steps, r_sim.piling, r_sim.before, r_sim.arrival, r_code.piling,
+                run.result.steps, r_sim.piling, r_sim.before, r_sim.arrival, r_code.piling,
                 r_code.before, r_code.arrival, r_record.piling, r_record.before, r_record.arrival);
     CHECK(std::abs(r_sim.piling - r_code.piling) < 0.05);
     CHECK(std::abs(r_sim.before - r_code.before) < 0.05);

@@ -1,14 +1,18 @@
 #pragma once
 // Shared helpers of the validation tests: locating cases and reference data, reading the
-// reference CSV files (comment lines start with '#').
+// reference CSV files (comment lines start with '#'), running a case the command line's way.
 #include "sluice/io/case_reader.hpp"
+#include "sluice/solver/run.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h> // getpid: a folder of its own when suites run side by side
 
 namespace sluice::testing {
 
@@ -17,6 +21,27 @@ inline std::string case_path(const std::string& name) {
 }
 inline std::string data_path(const std::string& name) {
     return std::string(SLUICE_SOURCE_DIR) + "/tests/data/" + name;
+}
+
+// A case run through run_case (case reader output, run loop, probe CSV files: what `sluice run`
+// does) into a results folder of its own under the temporary directory, emptied first. The
+// caller reads the files and removes the folder.
+struct FolderRun {
+    std::string folder;
+    RunResult result;
+};
+inline FolderRun run_in_temp_folder(const CaseConfig& cfg, const std::string& tag, int threads) {
+    FolderRun run;
+    run.folder = (std::filesystem::temp_directory_path() /
+                  ("sluice_test_" + tag + "_" + std::to_string(::getpid())))
+                     .string();
+    std::filesystem::remove_all(run.folder);
+    RunOptions opts;
+    opts.out_dir = run.folder;
+    opts.threads = threads;
+    opts.quiet = true;
+    run.result = run_case(cfg, opts);
+    return run;
 }
 
 // Rows of a CSV file with a header line, '#' comment lines skipped; fields as strings.
