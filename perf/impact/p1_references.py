@@ -2,7 +2,7 @@
 """sluice's pressure at Buchner's sensor P1 against the record and against published simulations.
 
     perf/impact/p1_references.py RUN_OR_STUDY [...] [--probes P1_area,P1] [--smooth-ms 10]
-                                 [--out PREFIX] [--png OUT.png]
+                                 [--case CASE.toml] [--out PREFIX] [--png OUT.png]
 
 Buchner's P1 record (two digitisations) sits three times above what sluice reads at the nominal
 sensor height, 0.16 m, in every scheme and at every resolution (docs/IMPACT_LOADS.md). Is that
@@ -209,10 +209,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("dirs", nargs="+", type=Path, help="run folders or study folders")
     ap.add_argument("--probes", default="P1_area,P1", help="sluice probes at 0.16 m")
     ap.add_argument("--smooth-ms", type=float, default=10.0)
+    ap.add_argument("--case", type=Path, default=analyse.DEFAULT_CASE,
+                    help="the case whose probe heights a run folder without study_run.json "
+                         "takes (default perf/impact/zhou_2d.toml)")
     ap.add_argument("--out", type=Path, help="write PREFIX.csv and PREFIX.txt")
     ap.add_argument("--png", type=Path)
     a = ap.parse_args(argv)
-    with open(analyse.DEFAULT_CASE, "rb") as f:
+    with open(a.case, "rb") as f:
         case = analyse.tomllib.load(f)
     runs = analyse.discover(a.dirs, case, {}, "default")
     if not runs:
