@@ -73,18 +73,21 @@ def load_probe(path: Path) -> tuple[np.ndarray, np.ndarray]:
     return d[:, 0], d[:, 1]
 
 
-def load_experiment(name: str) -> tuple[np.ndarray, np.ndarray]:
-    """(t*, p*) of a digitised record in data/, sorted by time (stable: the PySPH copy has a
-    few rows out of time order, as in its source)."""
-    rows = []
+def read_data_columns(name: str) -> dict[str, np.ndarray]:
+    """The columns of a CSV in data/ ('#' header lines, then a row of column names), keyed by
+    name, rows sorted by the first column (stable: digitisations such as the PySPH copy have
+    a few rows out of time order, as in their sources)."""
     with open(DATA / name) as f:
-        lines = [ln for ln in f if not ln.startswith("#")]
-    for r in list(csv.reader(lines))[1:]:
-        if r:
-            rows.append((float(r[0]), float(r[1])))
-    a = np.array(rows)
-    order = np.argsort(a[:, 0], kind="stable")
-    return a[order, 0], a[order, 1]
+        rows = list(csv.reader(ln for ln in f if not ln.startswith("#")))
+    body = np.array([[float(x) for x in r] for r in rows[1:] if r])
+    body = body[np.argsort(body[:, 0], kind="stable")]
+    return {h: body[:, i] for i, h in enumerate(rows[0])}
+
+
+def load_experiment(name: str) -> tuple[np.ndarray, np.ndarray]:
+    """(t*, p*) of a digitised record in data/ (its first two columns), sorted by time."""
+    cols = list(read_data_columns(name).values())
+    return cols[0], cols[1]
 
 
 def dry_as_zero(p: np.ndarray) -> np.ndarray:

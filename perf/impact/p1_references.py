@@ -27,7 +27,6 @@ A window a series does not cover is left empty. --out writes PREFIX.csv and PREF
 from __future__ import annotations
 
 import argparse
-import csv
 import math
 import sys
 from dataclasses import dataclass
@@ -54,28 +53,18 @@ class Series:
     p: np.ndarray    # p / (rho g H)
 
 
-def _read_columns(name: str) -> dict[str, np.ndarray]:
-    """A data/ CSV with '#' header lines and a column-name row, rows sorted by the first column
-    (stable: digitisations have a few rows out of order, as in their sources)."""
-    with open(DATA / name) as f:
-        rows = list(csv.reader(ln for ln in f if not ln.startswith("#")))
-    head, body = rows[0], np.array([[float(x) for x in r] for r in rows[1:] if r])
-    body = body[np.argsort(body[:, 0], kind="stable")]
-    return {h: body[:, i] for i, h in enumerate(head)}
-
-
 def references(sc: analyse.Scales, smooth_s: float) -> list[Series]:
     out = []
     for label, name in analyse.EXPERIMENT[0.160]:
         t, p = analyse.load_experiment(name)
         out.append(Series(label, "record", "0.16 m (nominal)", t, p))
-    m = _read_columns("marrone2011_P1_sim.csv")
+    m = analyse.read_data_columns("marrone2011_P1_sim.csv")
     for col in ("h320", "h80"):
         out.append(Series(f"Marrone et al. 2011, H/{col[1:]}", "code", "not stated",
                           m["time"], m[col]))
-    d = _read_columns("decourcy2024_y160mm_sim.csv")
+    d = analyse.read_data_columns("decourcy2024_y160mm_sim.csv")
     out.append(Series("De Courcy et al. 2024, H/400", "code", "0.16 m", d["time"], d["P4"]))
-    tp = _read_columns("trixiparticles_y160mm_H400.csv")
+    tp = analyse.read_data_columns("trixiparticles_y160mm_H400.csv")
     for col, what in (("wcsph_Pa", "WCSPH"), ("edac_Pa", "EDAC")):
         p = analyse.moving_average(tp["time_s"], tp[col], smooth_s)
         out.append(Series(f"TrixiParticles {what}, H/400", "code", "0.16 m",
