@@ -31,14 +31,15 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import analyse  # noqa: E402  (load_probe, cumulative_trapezoid)
+import records  # noqa: E402  (load_probe)
+import signals  # noqa: E402  (cumulative_trapezoid)
 
 
 def cumulative_impulse(t, f, projection):
     """Impulse from the start to each sample time, as the scheme applies the sampled force."""
     if not projection:
         # leap-frog: the force sampled at t_k acts half a step before and half after it
-        return analyse.cumulative_trapezoid(t, f)
+        return signals.cumulative_trapezoid(t, f)
     # the force sampled after step k acts over step k
     return np.concatenate([[0.0], np.cumsum(f[1:] * np.diff(t))])
 
@@ -68,7 +69,7 @@ def main():
             sys.exit(f"{run}: fewer than two snapshots in [{args.t_from}, {args.t_to}] s")
         impulses = {}
         for name in ("F_right_wall", "F_left_wall", "F_floor"):
-            t, f = analyse.load_probe(Path(run) / "probes" / f"{name}.csv")
+            t, f = records.load_probe(Path(run) / "probes" / f"{name}.csv")
             impulses[name] = (t, cumulative_impulse(t, f, args.projection))
 
         def impulse(name, ta, tb):

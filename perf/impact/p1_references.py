@@ -29,14 +29,18 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-import analyse
+import experiment
+import metrics
+import records
+import run_folders
+import signals
 
-DATA = analyse.DATA
 WINDOWS = [(2.5, 3.0), (3.0, 3.4), (3.4, 5.0), (5.0, 6.2), (6.2, 7.0)]
 FIRST_PEAK_RANGE = (2.4, 3.4)  # the 0.85 s runs end at t* = 3.44
 SECOND_PEAK_RANGE = (5.5, 7.0)
@@ -53,26 +57,26 @@ class Series:
     p: np.ndarray    # p / (rho g H)
 
 
-def references(sc: analyse.Scales, smooth_s: float) -> list[Series]:
+def references(sc: metrics.Scales, smooth_s: float) -> list[Series]:
     out = []
-    for label, name in analyse.EXPERIMENT[0.160]:
-        t, p = analyse.load_experiment(name)
+    for label, name in experiment.EXPERIMENT[0.160]:
+        t, p = records.load_experiment(name)
         out.append(Series(label, "record", "0.16 m (nominal)", t, p))
-    m = analyse.read_data_columns("marrone2011_P1_sim.csv")
+    m = records.read_data_columns("marrone2011_P1_sim.csv")
     for col in ("h320", "h80"):
         out.append(Series(f"Marrone et al. 2011, H/{col[1:]}", "code", "not stated",
                           m["time"], m[col]))
-    d = analyse.read_data_columns("decourcy2024_y160mm_sim.csv")
+    d = records.read_data_columns("decourcy2024_y160mm_sim.csv")
     out.append(Series("De Courcy et al. 2024, H/400", "code", "0.16 m", d["time"], d["P4"]))
-    tp = analyse.read_data_columns("trixiparticles_y160mm_H400.csv")
+    tp = records.read_data_columns("trixiparticles_y160mm_H400.csv")
     for col, what in (("wcsph_Pa", "WCSPH"), ("edac_Pa", "EDAC")):
-        p = analyse.moving_average(tp["time_s"], tp[col], smooth_s)
+        p = signals.moving_average(tp["time_s"], tp[col], smooth_s)
         out.append(Series(f"TrixiParticles {what}, H/400", "code", "0.16 m",
                           tp["time_s"] / sc.t, p / sc.p))
     return out
 
 
-def sluice_series(runs: list[analyse.RunInfo], probes: list[str], smooth_s: float) -> list[Series]:
+def sluice_series(runs: list[run_folders.RunInfo], probes: list[str], smooth_s: float) -> list[Series]:
     out = []
     for run in runs:
         sc = run.scales
@@ -80,8 +84,8 @@ def sluice_series(runs: list[analyse.RunInfo], probes: list[str], smooth_s: floa
             path = run.folder / "probes" / f"{name}.csv"
             if name not in run.probes or not path.exists():
                 continue
-            t, p = analyse.load_probe(path)
-            q = analyse.moving_average(t, p, smooth_s)
+            t, p = records.load_probe(path)
+            q = signals.moving_average(t, p, smooth_s)
             label = f"sluice {run.variant} {run.label} {name}"
             out.append(Series(label, "sluice", f"{run.probes[name]:.3f} m", t / sc.t, q / sc.p))
     return out
@@ -198,15 +202,15 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("dirs", nargs="+", type=Path, help="run folders or study folders")
     ap.add_argument("--probes", default="P1_area,P1", help="sluice probes at 0.16 m")
     ap.add_argument("--smooth-ms", type=float, default=10.0)
-    ap.add_argument("--case", type=Path, default=analyse.DEFAULT_CASE,
+    ap.add_argument("--case", type=Path, default=run_folders.DEFAULT_CASE,
                     help="the case whose probe heights a run folder without study_run.json "
                          "takes (default perf/impact/zhou_2d.toml)")
     ap.add_argument("--out", type=Path, help="write PREFIX.csv and PREFIX.txt")
     ap.add_argument("--png", type=Path)
     a = ap.parse_args(argv)
     with open(a.case, "rb") as f:
-        case = analyse.tomllib.load(f)
-    runs = analyse.discover(a.dirs, case, {}, "default")
+        case = tomllib.load(f)
+    runs = run_folders.discover(a.dirs, case, {}, "default")
     if not runs:
         print("no runs found", file=sys.stderr)
         return 2
@@ -224,7 +228,7 @@ def main(argv: list[str] | None = None) -> int:
     print(text)
     if a.out:
         a.out.parent.mkdir(parents=True, exist_ok=True)
-        analyse.write_csv(a.out.with_suffix(".csv"), rows, list(rows[0].keys()))
+        records.write_csv(a.out.with_suffix(".csv"), rows, list(rows[0].keys()))
         a.out.with_suffix(".txt").write_text(text + "\n")
     if a.png:
         plot(series, a.png, a.smooth_ms)

@@ -16,7 +16,8 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import analyse  # noqa: E402
+import experiment  # noqa: E402
+import metrics  # noqa: E402
 
 # m: each panel holds two rows of wall particles at dx = 0.01 m (four at 0.005 m). Valid for
 # dx = 0.01 m / k only: at dx = 0.02 m the strips' edges fall on wall rows.
@@ -31,21 +32,21 @@ PROBES = [("P1 (0.15-0.17 m) panel", "P1_panel"), ("P1 9 mm sensor (force)", "P1
           ("3 mm point", "y003mm")]
 
 
-def figures(run: Path, probe: str, sc: analyse.Scales) -> dict | None:
+def figures(run: Path, probe: str, sc: metrics.Scales) -> dict | None:
     path = run / "probes" / f"{probe}.csv"
     if not path.exists():  # a run from before the probe was added to the case
         return None
     d = np.genfromtxt(path, delimiter=",", names=True)
     p = d["Fx_N"] / PANEL_HEIGHT if probe.endswith("_panel") else d["pressure_Pa"]
-    return analyse.impact_metrics(d["time_s"], p, sc)
+    return metrics.impact_metrics(d["time_s"], p, sc)
 
 
 def main() -> int:
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     median = "--median" in sys.argv
-    sc = analyse.Scales()  # H = 0.6 m, g = 9.81, rho0 = 1000
+    sc = metrics.Scales()  # H = 0.6 m, g = 9.81, rho0 = 1000
     rows = {name: [figures(Path(r), probe, sc) for r in args] for name, probe in PROBES}
-    for exp in analyse.experiment_metrics(0.16, sc):
+    for exp in experiment.experiment_metrics(0.16, sc):
         print(f"{exp['label']:40s} filtered peak {exp['peak_filt_star']:.2f} rho g H, "
               f"impulse {exp['impulse_star']:.3f} rho g H sqrt(H/g)")
     for name, ms in rows.items():

@@ -33,6 +33,8 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "lib"))
 sys.path.insert(0, str(HERE))
 import analyse  # noqa: E402
+import metrics  # noqa: E402
+import run_folders  # noqa: E402
 import sluice_run as sr  # noqa: E402
 
 CASE = HERE / "zhou_2d.toml"
@@ -97,7 +99,7 @@ def parse_resolution(s: str, H: float) -> float:
 
 
 def plan_runs(a, case: dict) -> list[dict]:
-    sc = analyse._case_scales(case)
+    sc = run_folders.case_scales(case)
     sqrt_gH = math.sqrt(sc.g * sc.H)
     x_wall = float(case.get("walls", {}).get("tank_hi", case["domain"]["hi"])[0])
     keeps_force = sr.projection_keeps_force_probes(a.sluice)
@@ -228,15 +230,15 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--jitters", help="an ensemble per point: particles.jitter values, "
                     "comma-separated (e.g. 0,0.002,0.005,0.01); convergence is then judged on "
                     "the medians (a first-impact peak varies up to 2x between such runs)")
-    ap.add_argument("--window", type=float, default=analyse.DEFAULT_WINDOW_STAR)
-    ap.add_argument("--filter-ms", type=float, default=1e3 * analyse.DEFAULT_FILTER_S)
+    ap.add_argument("--window", type=float, default=metrics.DEFAULT_WINDOW_STAR)
+    ap.add_argument("--filter-ms", type=float, default=1e3 * metrics.DEFAULT_FILTER_S)
     ap.add_argument("--no-analyse", action="store_true")
     ap.add_argument("--dry-run", action="store_true", help="print the plan and stop")
     a = ap.parse_args(argv)
 
     a.case = a.case.resolve()
     case = sr.read_case(a.case)
-    H = analyse._case_scales(case).H
+    H = run_folders.case_scales(case).H
     res = a.resolutions.split(",") if a.resolutions else (QUICK_RES if a.quick else DEFAULT_RES)
     a.dx = [parse_resolution(s, H) for s in res]
     a.c0 = [float(x) for x in a.c0.split(",")] if a.c0 else (QUICK_C0 if a.quick else DEFAULT_C0)
@@ -295,7 +297,7 @@ def main(argv: list[str] | None = None) -> int:
     if failed:
         print(f"== {failed} run(s) failed; see their study_run.json (stderr_tail) and logs/")
     if not a.no_analyse:
-        ok = [analyse.run_from_study(r["out_dir"]) for r in runs
+        ok = [run_folders.run_from_study(r["out_dir"]) for r in runs
               if (r["out_dir"] / "summary.json").exists()]
         analyse.analyse(ok, a.out, a.window, 1e-3 * a.filter_ms)
     return 1 if failed else 0

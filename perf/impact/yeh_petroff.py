@@ -25,7 +25,7 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-import analyse  # noqa: E402  (moving_average and integral on irregular samples)
+import signals  # noqa: E402  (moving_average and integral on irregular samples)
 
 EXP = HERE / "data" / "yeh_petroff_column_force.csv"
 
@@ -50,7 +50,7 @@ def load_run(run: Path, probe: str = "F_column") -> tuple[np.ndarray, np.ndarray
 
 
 def metrics(t: np.ndarray, f: np.ndarray, rise: float, filter_s: float) -> dict:
-    ff = analyse.moving_average(t, f, filter_s)
+    ff = signals.moving_average(t, f, filter_s)
     hit = np.nonzero(ff > rise)[0]
     if len(hit) == 0:
         return {"t_rise": math.nan}
@@ -58,7 +58,7 @@ def metrics(t: np.ndarray, f: np.ndarray, rise: float, filter_s: float) -> dict:
     w = (t >= t0) & (t <= t0 + 0.15)
     plateau = (t >= t0 + 0.15) & (t <= t0 + 0.5)
     return {"t_rise": float(t0), "peak_raw": float(f[w].max()), "peak_filt": float(ff[w].max()),
-            "impulse": analyse.integral(t, f, t0, t0 + 0.15),
+            "impulse": signals.integral(t, f, t0, t0 + 0.15),
             "plateau": float(ff[plateau].mean()) if plateau.any() else math.nan,
             "t_end_after_rise": float(t[-1] - t0), "tf": t - t0, "ff": ff}
 

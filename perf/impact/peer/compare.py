@@ -37,6 +37,11 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 import analyse  # noqa: E402  (perf/impact/analyse.py)
+import experiment  # noqa: E402
+import metrics  # noqa: E402
+import records  # noqa: E402
+import run_folders  # noqa: E402
+import signals  # noqa: E402
 import panels  # noqa: E402  (perf/impact/panels.py)
 
 SIGNALS = [("P1 panel 150-170 mm", "P1_panel", 0.16), ("P1 point 160 mm", "P1", 0.16),
@@ -64,7 +69,7 @@ def mean_over(t_star: np.ndarray, pf: np.ndarray, lo: float, hi: float) -> float
     return float(np.mean(pf[m]))
 
 
-def figures(label: str, run: Path, sc: analyse.Scales, exp: dict) -> list[dict]:
+def figures(label: str, run: Path, sc: metrics.Scales, exp: dict) -> list[dict]:
     rows = []
     for name, probe, y in SIGNALS:
         s = signal(run, probe)
@@ -78,13 +83,13 @@ def figures(label: str, run: Path, sc: analyse.Scales, exp: dict) -> list[dict]:
                               "neg_longest_ms", "window_complete")}}
         if probe in ("P1", "P1_panel"):
             ts = t / sc.t
-            pf = analyse.moving_average(t, p, analyse.DEFAULT_FILTER_S) / sc.p
-            lo, hi = analyse.RMS_RANGE_STAR
+            pf = signals.moving_average(t, p, metrics.DEFAULT_FILTER_S) / sc.p
+            lo, hi = experiment.RMS_RANGE_STAR
             row.update({
                 "ratio_peak_filt": m["peak_filt_star"] / exp["peak_filt_star"],
                 "ratio_impulse": m["impulse_star"] / exp["impulse_star"],
                 "dt_contact_star": m["t_contact_star"] - exp["t_contact_star"],
-                "rms_2_7": (analyse.rms_against(ts, pf, exp["t_star"], exp["p_star"], lo, hi)
+                "rms_2_7": (metrics.rms_against(ts, pf, exp["t_star"], exp["p_star"], lo, hi)
                             if ts[-1] >= hi else math.nan)})
             for a, b in LATER:
                 row[f"mean_{a:g}_{b:g}"] = mean_over(ts, pf, a, b)
@@ -96,13 +101,13 @@ def figures(label: str, run: Path, sc: analyse.Scales, exp: dict) -> list[dict]:
     return rows
 
 
-def run_info(label: str, run: Path, sc: analyse.Scales) -> analyse.RunInfo:
+def run_info(label: str, run: Path, sc: metrics.Scales) -> run_folders.RunInfo:
     """What wall_force_table needs: a peer run's study_run.json (peer_metrics.py) gives its c0;
     a sluice run of zhou_2d.toml has dx = 0.01 m and c0 = 48.52 m/s unless --set changed them."""
     if (run / "study_run.json").exists():
-        info = analyse.run_from_study(run)
+        info = run_folders.run_from_study(run)
         return dataclasses.replace(info, variant=label)
-    return analyse.RunInfo(folder=run, variant=label, label=run.name, dx=0.01, c0=48.52,
+    return run_folders.RunInfo(folder=run, variant=label, label=run.name, dx=0.01, c0=48.52,
                            c0_factor=20.0, end_time=math.nan, scales=sc, probes={})
 
 
@@ -145,7 +150,7 @@ def print_tables(rows: list[dict], exp: dict, exp_b: dict) -> None:
                 f"{fmt(r['t_second_peak_star'], '5.2f')}")
 
 
-def plot(runs: list[tuple[str, Path]], sc: analyse.Scales, exps: list[dict], out: Path) -> Path:
+def plot(runs: list[tuple[str, Path]], sc: metrics.Scales, exps: list[dict], out: Path) -> Path:
     import matplotlib  # noqa: PLC0415 (only when plotting)
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # noqa: PLC0415
@@ -168,10 +173,10 @@ def plot(runs: list[tuple[str, Path]], sc: analyse.Scales, exps: list[dict], out
                 else:
                     t, p = signal(run, probe)
                     v = p / sc.p
-                vf = analyse.moving_average(t, v, analyse.DEFAULT_FILTER_S)
+                vf = signals.moving_average(t, v, metrics.DEFAULT_FILTER_S)
                 ts = t / sc.t
                 m = (ts >= lo) & (ts <= hi)
-                ax.plot(ts[m], analyse.dry_as_zero(v[m]), color=colours[j], lw=0.4, alpha=0.35)
+                ax.plot(ts[m], signals.dry_as_zero(v[m]), color=colours[j], lw=0.4, alpha=0.35)
                 ax.plot(ts[m], vf[m], color=colours[j], lw=1.4, label=f"{label} (1 ms mean)")
             if with_exp:
                 for e, style in zip(exps, ["k-", "k--"]):
@@ -199,7 +204,7 @@ def write_csv(path: Path, rows: list[dict]) -> None:
     cols = []
     for r in rows:
         cols.extend(k for k in r if k not in cols)
-    analyse.write_csv(path, rows, cols)
+    records.write_csv(path, rows, cols)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -215,15 +220,15 @@ def main(argv: list[str] | None = None) -> int:
         if not d or not (Path(d) / "probes").is_dir():
             ap.error(f"--run {s}: expected LABEL=DIR with DIR/probes/")
         runs.append((label, Path(d)))
-    sc = analyse.Scales()
-    exps = analyse.experiment_metrics(0.16, sc)
+    sc = metrics.Scales()
+    exps = experiment.experiment_metrics(0.16, sc)
     exp, exp_b = exps[0], exps[1]
     rows = [r for label, run in runs for r in figures(label, run, sc, exp)]
     buf = io.StringIO()
     with redirect_stdout(buf):
         print_tables(rows, exp, exp_b)
         force = analyse.wall_force_table([run_info(label, run, sc) for label, run in runs],
-                                         analyse.DEFAULT_WINDOW_STAR, analyse.DEFAULT_FILTER_S)
+                                         metrics.DEFAULT_WINDOW_STAR, metrics.DEFAULT_FILTER_S)
         print("   (variant = run label; whole wall = the x+ face and the corner it shares; "
               "peak over rho g H^2/2 = 1766 N/m, impulse over that times sqrt(H/g))")
     text = buf.getvalue()

@@ -37,6 +37,8 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 import analyse  # noqa: E402  (perf/impact/analyse.py)
+import metrics  # noqa: E402
+import run_folders  # noqa: E402
 
 DP = 0.01              # m, the XML's dp
 WALL_X = 3.225         # the downstream wall's boundary particles
@@ -120,7 +122,7 @@ def convert(run: Path) -> dict:
         ks = [i for i in range(N_STRIP) if lo < 0.005 + DP * i < hi]
         write_force(name, [parts[i] for i in ks])
     # the records analyse.py reads for a study run
-    sc = analyse.Scales()
+    sc = metrics.Scales()
     end = float(t[-1])
     with open(run / "study_run.json", "w") as f:
         json.dump({"variant": "peer", "label": run.name, "dx": DP, "c0": k["c0"],
@@ -146,7 +148,7 @@ def main(argv: list[str]) -> int:
         k = convert(r)
         print(f"{r}: c0 {k['c0']:.2f} m/s, B {k['B']:.6g} Pa, gamma {k['gamma']:g}, "
               f"{k['steps']:.0f} steps, {k['runtime_s']:.0f} s -> {r / 'probes'}")
-        infos.append(analyse.run_from_study(r))
+        infos.append(run_folders.run_from_study(r))
     if "--no-analyse" not in argv:
         analyse.analyse(infos, runs[0] / "analysis", plots=False)
     return 0
