@@ -16,6 +16,8 @@ J. Fluids Eng. 130, 078001, with the constant refinement ratio r = 2: with f1, f
 fine, middle and coarse medians, e21 = f2 - f1 and e32 = f3 - f2,
   - the apparent order p = |ln|e32 / e21|| / ln 2 (their eq. 3 with r constant);
   - e32 / e21 < 0 is oscillatory convergence: no order, no extrapolation;
+  - both |e21| and |e32| within 1 % of f1 is "flat": converged, and too little change to read
+    an order from;
   - the extrapolated value f_ext = (2^p f1 - f2) / (2^p - 1) (their eq. 4);
   - the fine-grid convergence index GCI = 1.25 |e21 / f1| / (2^p - 1) (their eq. 5), with p
     taken as at most 2, the formal order of the kernel approximation, since a larger apparent
@@ -40,6 +42,7 @@ from records import write_csv  # noqa: E402
 
 FORMAL_ORDER = 2.0
 SAFETY = 1.25  # Celik et al. (2008): the factor for three grids
+FLAT = 0.01    # both changes within 1 % of the fine value: converged, no order to compute
 FIGURES = [("1 ms peak", "peak_filt_star", "peak_filt"),
            ("10 ms peak", "peak_smooth_star", "peak_smooth"),
            ("impulse", "impulse_star", "impulse_star")]
@@ -74,8 +77,8 @@ def celik(f1: float, f2: float, f3: float) -> dict:
     nan = math.nan
     e21, e32 = f2 - f1, f3 - f2
     res = {"order": nan, "f_ext": nan, "gci_fine": nan, "kind": ""}
-    if e21 == 0 or e32 == 0:
-        res["kind"] = "unchanged"
+    if max(abs(e21), abs(e32)) <= FLAT * abs(f1):
+        res["kind"] = "flat"  # both steps within 1 %: no order to read, nothing left to fix
         return res
     if e32 / e21 < 0:
         res["kind"] = "oscillatory"
