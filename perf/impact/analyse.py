@@ -33,7 +33,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import re
 import sys
 import tomllib
 from dataclasses import dataclass
@@ -45,7 +44,7 @@ from convergence import CRITERION, convergence_pairs
 from experiment import RMS_RANGE_STAR, digitisation_spread, experiment_metrics
 from metrics import (DEFAULT_FILTER_S, DEFAULT_SMOOTH_S, DEFAULT_WINDOW_STAR, Scales,
                      impact_metrics, rms_against)
-from records import load_probe, write_csv
+from records import format_cell as fmt, load_probe, write_csv
 from run_folders import DEFAULT_CASE, RunInfo, discover
 from signals import integral, moving_average
 
@@ -134,13 +133,6 @@ def analyse_run(run: RunInfo, window_star: float = DEFAULT_WINDOW_STAR,
     return out
 
 
-def _fmt(v, spec: str) -> str:
-    if isinstance(v, float) and not math.isfinite(v):
-        width = re.match(r"[<>^]?(\d*)", spec.lstrip("+")).group(1)
-        return "-".rjust(int(width) if width else 1)
-    return format(v, spec)
-
-
 def print_table(results: list[ProbeResult]) -> None:
     head = (f"{'variant':10s} {'run':14s} {'H/dx':>5s} {'c0*':>4s} {'probe':9s} {'y[m]':>6s} "
             f"{'t*c':>5s} {'raw':>6s} {'filt':>6s} {'t*pk':>5s} {'I*':>6s} {'min*':>7s} "
@@ -152,12 +144,12 @@ def print_table(results: list[ProbeResult]) -> None:
         rms = row["rms_2_7"] if math.isfinite(row["rms_2_7"]) else row["rms_2_end"]
         print(f"{row['variant'][:10]:10s} {row['run'][:14]:14s} {row['H_over_dx']:5.0f} "
               f"{row['c0_factor']:4g} {row['probe'][:9]:9s} {row['probe_y']:6.3f} "
-              f"{_fmt(row['t_contact_star'], '5.2f')} {_fmt(row['peak_raw_star'], '6.2f')} "
-              f"{_fmt(row['peak_filt_star'], '6.3f')} {_fmt(row['t_peak_filt_star'], '5.2f')} "
-              f"{_fmt(row['impulse_star'], '6.3f')} {_fmt(row['min_raw_star'], '7.2f')} "
-              f"{_fmt(row['neg_longest_ms'], '7.2f')} {_fmt(row['neg_total_ms'], '6.1f')} "
-              f"{_fmt(row['ratio_peak_filt'], '6.2f')} {_fmt(row['ratio_impulse'], '6.2f')} "
-              f"{_fmt(rms, '5.3f')} "
+              f"{fmt(row['t_contact_star'], '5.2f')} {fmt(row['peak_raw_star'], '6.2f')} "
+              f"{fmt(row['peak_filt_star'], '6.3f')} {fmt(row['t_peak_filt_star'], '5.2f')} "
+              f"{fmt(row['impulse_star'], '6.3f')} {fmt(row['min_raw_star'], '7.2f')} "
+              f"{fmt(row['neg_longest_ms'], '7.2f')} {fmt(row['neg_total_ms'], '6.1f')} "
+              f"{fmt(row['ratio_peak_filt'], '6.2f')} {fmt(row['ratio_impulse'], '6.2f')} "
+              f"{fmt(rms, '5.3f')} "
               f"{'' if not math.isfinite(row['t_contact_s']) else ('ok' if row['window_complete'] else 'cut'):>3s}")
     print("columns: t*c contact time; raw / filt first-impact peak p/(rho g H), unfiltered and "
           "1 ms moving average; t*pk time of the filtered peak; I* impulse over the window "
@@ -203,10 +195,10 @@ def print_convergence(pairs: list[dict]) -> None:
             smooth = q["rel_change_smooth"]
             if math.isfinite(smooth):
                 flag += f" (longer average {'PASS' if abs(smooth) < CRITERION else 'FAIL'})"
-        print(f"      {q['what']:24s} peak {_fmt(q['peak_a'], '6.3f')} -> {_fmt(q['peak_b'], '6.3f')}"
-              f"  {_fmt(100 * q['rel_change_peak'], '+7.1f')} %"
-              f"   longer average {_fmt(100 * q['rel_change_smooth'], '+7.1f')} %"
-              f"   impulse {_fmt(100 * q['rel_change_impulse'], '+7.1f')} %{flag}")
+        print(f"      {q['what']:24s} peak {fmt(q['peak_a'], '6.3f')} -> {fmt(q['peak_b'], '6.3f')}"
+              f"  {fmt(100 * q['rel_change_peak'], '+7.1f')} %"
+              f"   longer average {fmt(100 * q['rel_change_smooth'], '+7.1f')} %"
+              f"   impulse {fmt(100 * q['rel_change_impulse'], '+7.1f')} %{flag}")
 
 
 def wall_force_table(runs: list[RunInfo], window_star: float, filter_s: float,

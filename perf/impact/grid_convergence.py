@@ -23,7 +23,8 @@ fine, middle and coarse medians, e21 = f2 - f1 and e32 = f3 - f2,
     taken as at most 2, the formal order of the kernel approximation, since a larger apparent
     order from three noisy medians would claim more than the scheme can give (Roache 1998,
     "Verification and validation in computational science and engineering", ch. 5).
-Beside it: the change per doubling, (fine - coarse) / fine as analyse.py gives it (issue 18's
+Where the change grows with refinement ("diverging", not yet asymptotic) the order is printed
+negative and nothing is extrapolated. Beside it: the change per doubling, (fine - coarse) / fine as analyse.py gives it (issue 18's
 criterion: less than 15 %), and whether the last change is larger than the fine ensemble's
 half-range, the run-to-run scatter below which a change is not resolved.
 """
@@ -38,7 +39,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from convergence import CRITERION  # noqa: E402
-from records import write_csv  # noqa: E402
+from records import format_cell as fmt, write_csv  # noqa: E402
 
 FORMAL_ORDER = 2.0
 SAFETY = 1.25  # Celik et al. (2008): the factor for three grids
@@ -120,23 +121,18 @@ def table(groups: dict[str, dict[int, list[float]]], figure: str) -> list[dict]:
     return rows
 
 
-def fmt(v: float, spec: str) -> str:
-    """v in spec, or "-" right-aligned in the same width when v is not a finite number."""
-    if isinstance(v, float) and math.isfinite(v):
-        return format(v, spec)
-    return "-".rjust(int(spec.lstrip("+").split(".")[0]))
-
-
-def print_table(rows: list[dict]) -> None:
-    print(f"{'sensor':16s} {'figure':10s} {'runs':>7s} {'coarse':>7s} {'mid':>7s} {'fine':>7s} "
-          f"{'fine range':>15s} {'step1 %':>8s} {'step2 %':>8s} {'>noise':>6s} {'order':>6s} "
-          f"{'f_ext':>7s} {'GCI %':>6s}  kind")
+def format_table(rows: list[dict]) -> list[str]:
+    lines = [f"{'sensor':16s} {'figure':10s} {'runs':>7s} {'coarse':>7s} {'mid':>7s} {'fine':>7s} "
+             f"{'fine range':>15s} {'step1 %':>8s} {'step2 %':>8s} {'>noise':>6s} {'order':>6s} "
+             f"{'f_ext':>7s} {'GCI %':>6s}  kind"]
     for r in rows:
-        print(f"{r['sensor'][:16]:16s} {r['figure']:10s} {r['runs']:>7s} {r['coarse']:7.3f} "
-              f"{r['mid']:7.3f} {r['fine']:7.3f} {r['fine_min']:7.3f}-{r['fine_max']:<7.3f}"
-              f"{fmt(100 * r['change_mid'], '+8.1f')} {fmt(100 * r['change_fine'], '+8.1f')} "
-              f"{'yes' if r['resolved'] else 'no':>6s} {fmt(r['order'], '6.2f')} "
-              f"{fmt(r['f_ext'], '7.3f')} {fmt(100 * r['gci_fine'], '6.1f')}  {r['kind']}")
+        lines.append(
+            f"{r['sensor'][:16]:16s} {r['figure']:10s} {r['runs']:>7s} {r['coarse']:7.3f} "
+            f"{r['mid']:7.3f} {r['fine']:7.3f} {r['fine_min']:7.3f}-{r['fine_max']:<7.3f}"
+            f"{fmt(100 * r['change_mid'], '+8.1f')} {fmt(100 * r['change_fine'], '+8.1f')} "
+            f"{'yes' if r['resolved'] else 'no':>6s} {fmt(r['order'], '6.2f')} "
+            f"{fmt(r['f_ext'], '7.3f')} {fmt(100 * r['gci_fine'], '6.1f')}  {r['kind']}")
+    return lines
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -172,17 +168,11 @@ def main(argv: list[str] | None = None) -> int:
              f"(issue 18: |change| < {100 * CRITERION:g} %); >noise: |fine - mid| above half the "
              "fine runs' range; order, f_ext, GCI: Celik et al. (2008), GCI with the order "
              f"capped at {FORMAL_ORDER:g}"]
-    print("\n".join(lines))
-    print_table(rows)
+    text = "\n".join(lines + format_table(rows)) + "\n"
+    print(text, end="")
     if a.out:
-        import contextlib
-        import io
-        buf = io.StringIO()
-        with contextlib.redirect_stdout(buf):
-            print("\n".join(lines))
-            print_table(rows)
         a.out.parent.mkdir(parents=True, exist_ok=True)
-        a.out.with_suffix(".txt").write_text(buf.getvalue())
+        a.out.with_suffix(".txt").write_text(text)
         write_csv(a.out.with_suffix(".csv"), rows, list(rows[0].keys()))
         print(f"wrote {a.out.with_suffix('.txt')} and {a.out.with_suffix('.csv')}")
     return 0

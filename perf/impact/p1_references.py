@@ -76,7 +76,8 @@ def references(sc: metrics.Scales, smooth_s: float) -> list[Series]:
     return out
 
 
-def sluice_series(runs: list[run_folders.RunInfo], probes: list[str], smooth_s: float) -> list[Series]:
+def sluice_series(runs: list[run_folders.RunInfo], probes: list[str],
+                  smooth_s: float) -> list[Series]:
     out = []
     for run in runs:
         sc = run.scales

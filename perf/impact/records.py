@@ -1,9 +1,11 @@
 """The impact study's CSV files: sluice's probe records, the reference data in data/ (a header
 of '#' lines saying where the data come from, then a row of column names) and the tables the
-scripts write."""
+scripts write (CSVs, and the cells of their text tables)."""
 from __future__ import annotations
 
 import csv
+import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -41,3 +43,12 @@ def write_csv(path: Path, rows: list[dict], columns: list[str]) -> None:
         w.writeheader()
         for r in rows:
             w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
+
+
+def format_cell(v, spec: str) -> str:
+    """v formatted with spec for a text table, or "-" right-aligned in spec's width when v is a
+    float that is not finite (a figure a run could not give)."""
+    if isinstance(v, float) and not math.isfinite(v):
+        width = re.match(r"[<>^]?(\d*)", spec.lstrip("+")).group(1)
+        return "-".rjust(int(width) if width else 1)
+    return format(v, spec)

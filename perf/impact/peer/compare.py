@@ -42,6 +42,7 @@ import metrics  # noqa: E402
 import records  # noqa: E402
 import run_folders  # noqa: E402
 import signals  # noqa: E402
+from records import format_cell as fmt  # noqa: E402
 import panels  # noqa: E402  (perf/impact/panels.py)
 
 SIGNALS = [("P1 panel 150-170 mm", "P1_panel", 0.16), ("P1 point 160 mm", "P1", 0.16),
@@ -108,13 +109,7 @@ def run_info(label: str, run: Path, sc: metrics.Scales) -> run_folders.RunInfo:
         info = run_folders.run_from_study(run)
         return dataclasses.replace(info, variant=label)
     return run_folders.RunInfo(folder=run, variant=label, label=run.name, dx=0.01, c0=48.52,
-                           c0_factor=20.0, end_time=math.nan, scales=sc, probes={})
-
-
-def fmt(v, spec: str) -> str:
-    if isinstance(v, float) and not math.isfinite(v):
-        return "-".rjust(int(spec.lstrip("+").split(".")[0] or 1))
-    return format(v, spec)
+                               c0_factor=20.0, end_time=math.nan, scales=sc, probes={})
 
 
 def print_tables(rows: list[dict], exp: dict, exp_b: dict) -> None:
