@@ -134,7 +134,10 @@ def analyse_run(run: RunInfo, window_star: float = DEFAULT_WINDOW_STAR,
 
 
 def print_table(results: list[ProbeResult]) -> None:
-    head = (f"{'variant':10s} {'run':14s} {'H/dx':>5s} {'c0*':>4s} {'probe':9s} {'y[m]':>6s} "
+    # The run column is as wide as the longest label (H240_c20_j0.002 and H240_c20_j0.005
+    # must not print alike).
+    rw = max([14] + [len(r.run.label) for r in results])
+    head = (f"{'variant':10s} {'run':{rw}s} {'H/dx':>5s} {'c0*':>4s} {'probe':9s} {'y[m]':>6s} "
             f"{'t*c':>5s} {'raw':>6s} {'filt':>6s} {'t*pk':>5s} {'I*':>6s} {'min*':>7s} "
             f"{'<-.5 ms':>7s} {'tot ms':>6s} {'pk/exp':>6s} {'I/exp':>6s} {'rms':>5s} {'win':>3s}")
     print(head)
@@ -142,7 +145,7 @@ def print_table(results: list[ProbeResult]) -> None:
     for r in results:
         row = r.row()
         rms = row["rms_2_7"] if math.isfinite(row["rms_2_7"]) else row["rms_2_end"]
-        print(f"{row['variant'][:10]:10s} {row['run'][:14]:14s} {row['H_over_dx']:5.0f} "
+        print(f"{row['variant'][:10]:10s} {row['run']:{rw}s} {row['H_over_dx']:5.0f} "
               f"{row['c0_factor']:4g} {row['probe'][:9]:9s} {row['probe_y']:6.3f} "
               f"{fmt(row['t_contact_star'], '5.2f')} {fmt(row['peak_raw_star'], '6.2f')} "
               f"{fmt(row['peak_filt_star'], '6.3f')} {fmt(row['t_peak_filt_star'], '5.2f')} "
