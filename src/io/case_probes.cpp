@@ -24,11 +24,14 @@ const std::vector<std::pair<std::string, ProbeType>> kProbeTypes = {
     {"force", ProbeType::force}};
 
 const std::vector<std::pair<std::string, SensorReading>> kSensorReadings = {
-    {"force", SensorReading::force}, {"interpolated", SensorReading::interpolated}};
+    {"force", SensorReading::force},
+    {"interpolated", SensorReading::interpolated},
+    {"collisions", SensorReading::collisions}};
 
 // An area sensor's or force probe's `reading`. The force reading sums the WCSPH momentum
 // equation's fluid-wall pair forces; the projection scheme applies no such forces, so there the
-// interpolated pressure is the default and the force reading is refused.
+// interpolated pressure is the default and the force reading is refused. The collisions reading
+// is the projection scheme's wall collisions alone; WCSPH has none, so there it is refused.
 SensorReading read_reading(const Section& s, const CaseConfig& c, std::string_view instead) {
     const bool wcsph = c.scheme == Scheme::wcsph;
     const SensorReading r = s.choice(
@@ -37,6 +40,10 @@ SensorReading read_reading(const Section& s, const CaseConfig& c, std::string_vi
               fmt::format("the force reading sums the pair forces of the WCSPH momentum "
                           "equation; the projection scheme has none (use \"interpolated\"{})",
                           instead));
+    s.require(!wcsph || r != SensorReading::collisions, "reading",
+              "the collisions reading is the momentum the projection scheme's wall collisions "
+              "give the wall; WCSPH has no wall collisions (its \"force\" reading holds every "
+              "fluid-wall force)");
     return r;
 }
 

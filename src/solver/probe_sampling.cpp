@@ -207,10 +207,12 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         if (probe.reading == SensorReading::force)
             return {double(wall_force_sensor(P, sim.kernel(), wall_load_params(sim), face, dx))};
         // The pressure on the face, and the traction of the wall collisions under it
-        // (projection; none under WCSPH).
-        const Real pressure = wall_pressure_sensor(P, sim.kernel(), face, dx / 4, p_min);
-        return {double(pressure +
-                       contact_traction(contacts, face, dx, sim.kernel_support(), Real(sim.h())))};
+        // (projection; none under WCSPH), or that traction alone.
+        const Real traction =
+            contact_traction(contacts, face, dx, sim.kernel_support(), Real(sim.h()));
+        if (probe.reading == SensorReading::collisions)
+            return {double(traction)};
+        return {double(wall_pressure_sensor(P, sim.kernel(), face, dx / 4, p_min) + traction)};
     }
     case ProbeType::water_level: {
         std::optional<Real> y;
@@ -226,7 +228,10 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         const WallLoadParams<D> prm = wall_load_params(sim);
         const Box<D> region = force_box<D>(cfg, probe);
         WallLoad load;
-        if (probe.reading == SensorReading::interpolated) {
+        if (probe.reading == SensorReading::collisions) {
+            // The momentum the scheme's wall collisions gave the region's wall particles.
+            load = contact_wall_load(contacts, region.lo, region.hi, about);
+        } else if (probe.reading == SensorReading::interpolated) {
             // The pressure on the wall's surfaces, and the momentum the scheme's wall
             // collisions gave the wall particles of the region (projection; none under WCSPH).
             load = interpolated_wall_load(P, sim.kernel(), force_patches<D>(cfg, probe), dx / 2,
@@ -278,12 +283,12 @@ std::vector<std::vector<double>> sample_probes(const Simulation<D>& sim,
             boxes.push_back(footprint(sim, probe));
         }
     }
-    // The regions of the due force probes and area sensors that read the interpolated load,
-    // whose wall collisions they add.
+    // The regions of the due force probes and area sensors that read the interpolated load
+    // (whose wall collisions they add) or the collisions alone.
     std::vector<Box<D>> contact_regions;
     for (std::size_t k : due) {
         const ProbeConfig& probe = cfg.probes[k];
-        if (probe.reading != SensorReading::interpolated)
+        if (probe.reading == SensorReading::force)
             continue;
         if (probe.type == ProbeType::force)
             contact_regions.push_back(force_box<D>(cfg, probe));

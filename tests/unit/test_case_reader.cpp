@@ -626,4 +626,19 @@ interval = 0.01
         expect_error(edit("diameter = 0.02", "diameter = 0.02\nreading = \"force\"", projection),
                      "probes[4].reading"),
         "projection"));
+    // The collisions reading (the projection scheme's wall collisions alone): accepted there,
+    // refused under WCSPH, which has no wall collisions.
+    CHECK(read_case(write_case("collisions_projection",
+                               edit("diameter = 0.02", "diameter = 0.02\nreading = \"collisions\"",
+                                    projection)))
+              .probes[4]
+              .reading == SensorReading::collisions);
+    CHECK(contains(
+        expect_error(edit("diameter = 0.02", "diameter = 0.02\nreading = \"collisions\"", text),
+                     "probes[4].reading"),
+        "WCSPH has no wall collisions"));
+    CHECK(contains(expect_error(edit("moment_about = [4, 0]\n",
+                                     "moment_about = [4, 0]\nreading = \"collisions\"\n", text),
+                                "probes[3].reading"),
+                   "WCSPH has no wall collisions"));
 }

@@ -53,8 +53,11 @@ enum class VelocityProfile { uniform, taylor_green, rotating, strain };
 enum class BlockShape { box, ellipse };
 enum class ProbeType { pressure, water_level, surge_front, force };
 // What an area sensor reads: the fluid's normal force on the wall under its face per unit area
-// (wall_force_sensor), or the pressure interpolated on the face (wall_pressure_sensor).
-enum class SensorReading { force, interpolated };
+// (wall_force_sensor), the pressure interpolated on the face (wall_pressure_sensor; under the
+// projection scheme plus the traction of its wall collisions), or that traction alone (the
+// projection scheme's collisions: how much of the interpolated reading is the wall model's).
+// A force probe reads likewise the pair forces, the interpolated load, or its collisions alone.
+enum class SensorReading { force, interpolated, collisions };
 
 struct FluidBlock {
     Triple lo{}, hi{}; // [m] axis-aligned box filled on a lattice of spacing dx
