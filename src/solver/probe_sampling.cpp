@@ -279,7 +279,8 @@ std::vector<std::vector<double>> sample_probes(const Simulation<D>& sim,
         if (probe.type == ProbeType::surge_front) {
             fronts.push_back(front_columns<D>(cfg, probe));
             fronts.back().add(P, sim.owned());
-        } else {
+        } else if (probe.reading != SensorReading::collisions) {
+            // (a collisions reading needs the wall contacts below, not particles)
             boxes.push_back(footprint(sim, probe));
         }
     }
