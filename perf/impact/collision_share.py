@@ -26,7 +26,6 @@ moving average, window 0.5 t* from contact; peaks in rho g H, the whole wall in 
 from __future__ import annotations
 
 import argparse
-import json
 import re
 import sys
 from pathlib import Path
@@ -37,7 +36,8 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
 from metrics import CONTACT_FRACTION, DEFAULT_FILTER_S, DEFAULT_WINDOW_STAR, Scales  # noqa: E402
-from records import format_cell, write_csv  # noqa: E402
+from records import format_cell, load_probe, write_csv  # noqa: E402
+from run_folders import RunInfo, run_from_study  # noqa: E402
 from signals import dry_as_zero, integral, moving_average  # noqa: E402
 
 CASE = HERE / "zhou_2d.toml"
@@ -69,25 +69,17 @@ def collisions_case(text: str) -> str:
     return text.rstrip("\n") + "\n" + "\n".join(twins)
 
 
-def load(path: Path) -> tuple[np.ndarray, np.ndarray]:
-    """Time and the first value column (pressure, or Fx of a force probe)."""
-    a = np.genfromtxt(path, delimiter=",", skip_header=1, usecols=(0, 1))
-    return a[:, 0], a[:, 1]
-
-
-def dx_of(run: Path) -> float:
-    info = json.loads((run / "study_run.json").read_text())
-    return float(info["dx"])
-
-
-def share_row(run: Path, sensor: str, sc: Scales) -> dict | None:
-    whole, coll = run / "probes" / f"{sensor}.csv", run / "probes" / f"{sensor}{SUFFIX}.csv"
+def share_row(run: RunInfo, sensor: str) -> dict | None:
+    sc: Scales = run.scales
+    probes = run.folder / "probes"
+    whole, coll = probes / f"{sensor}.csv", probes / f"{sensor}{SUFFIX}.csv"
     if not whole.exists() or not coll.exists():
         return None
-    t, p = load(whole)
-    tc_, c = load(coll)
+    # load_probe's value column is the first after the time: the pressure, or a force's Fx.
+    t, p = load_probe(whole)
+    tc_, c = load_probe(coll)
     if len(t) != len(tc_) or np.any(t != tc_):
-        raise SystemExit(f"{run}: {sensor} and its collisions twin have different samples")
+        raise SystemExit(f"{run.folder}: {sensor} and its collisions twin have different samples")
     wall = sensor == WALL
     unit = sc.p * sc.H / 2 if wall else sc.p            # rho g H^2/2 per metre, or rho g H
     q, c = dry_as_zero(p), dry_as_zero(c)
@@ -101,7 +93,7 @@ def share_row(run: Path, sensor: str, sc: Scales) -> dict | None:
     fp = fq - fc                                         # the pressure's part
     k = int(np.argmax(np.where(w, fq, -np.inf)))
     i_all, i_coll = integral(t, q, t0, t1), integral(t, c, t0, t1)
-    return {"run": run.name, "dx": dx_of(run), "H_over_dx": sc.H / dx_of(run), "sensor": sensor,
+    return {"run": run.label, "dx": run.dx, "H_over_dx": sc.H / run.dx, "sensor": sensor,
             "peak": fq[k] / unit, "peak_pressure_part": float(np.max(np.where(w, fp, -np.inf))) / unit,
             "peak_collisions": float(np.max(np.where(w, fc, -np.inf))) / unit,
             "share_at_peak": fc[k] / fq[k] if fq[k] > 0 else float("nan"),
@@ -113,13 +105,12 @@ COLUMNS = ["run", "dx", "H_over_dx", "sensor", "peak", "peak_pressure_part", "pe
            "share_at_peak", "impulse_share", "window_complete"]
 
 
-def analyse(runs: list[Path], out: Path | None) -> None:
-    sc = Scales()
+def analyse(runs: list[RunInfo], out: Path | None) -> None:
     rows = [r for run in runs for s in AREA_SENSORS + [WALL]
-            if (r := share_row(run, s, sc)) is not None]
+            if (r := share_row(run, s)) is not None]
     if not rows:
         raise SystemExit("no run with collisions twins (collision_share.py case ...)")
-    lines = ["# perf/impact/collision_share.py analyse " + " ".join(str(r) for r in runs),
+    lines = ["# perf/impact/collision_share.py analyse " + " ".join(str(r.folder) for r in runs),
              "# 1 ms filtered first-impact peak of the whole (interpolated) reading, of its "
              "pressure part (interpolated - collisions) and of the collisions alone, rho g H "
              "(whole wall: rho g H^2/2); the collisions' share of the reading at its peak and "
@@ -172,9 +163,9 @@ def main() -> None:
         print(args.out)
     else:
         # Finished runs only (summary.json is written at the end; study_run.json by study.py).
-        runs = [r for r in args.runs
+        runs = [run_from_study(r) for r in args.runs
                 if (r / "summary.json").exists() and (r / "study_run.json").exists()]
-        analyse(sorted(runs, key=lambda r: (-dx_of(r), r.name)), args.out)
+        analyse(sorted(runs, key=lambda r: (-r.dx, r.label)), args.out)
 
 
 if __name__ == "__main__":
