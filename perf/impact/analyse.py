@@ -42,8 +42,8 @@ import numpy as np
 
 from convergence import CRITERION, convergence_pairs
 from experiment import RMS_RANGE_STAR, digitisation_spread, experiment_metrics
-from metrics import (DEFAULT_FILTER_S, DEFAULT_SMOOTH_S, DEFAULT_WINDOW_STAR, Scales,
-                     impact_metrics, rms_against)
+from metrics import (CONTACT_FRACTION, DEFAULT_FILTER_S, DEFAULT_SMOOTH_S, DEFAULT_WINDOW_STAR,
+                     Scales, first_impact_window, impact_metrics, rms_against)
 from records import format_cell as fmt, load_probe, write_csv
 from run_folders import DEFAULT_CASE, RunInfo, discover
 from signals import integral, moving_average
@@ -221,17 +221,16 @@ def wall_force_table(runs: list[RunInfo], window_star: float, filter_s: float,
         scale = 0.5 * r.scales.rho0 * r.scales.g * r.scales.H**2
         ff = moving_average(t, fx, filter_s)
         fs = moving_average(t, fx, smooth_s)
-        hit = np.nonzero(ff > 0.05 * scale)[0]
-        if len(hit) == 0:
+        window = first_impact_window(t, ff, CONTACT_FRACTION * scale, window_star * r.scales.t)
+        if window is None:
             continue
-        tc = t[hit[0]]
-        w = (t >= tc) & (t <= tc + window_star * r.scales.t)
+        tc, te = window
+        w = (t >= tc) & (t <= te)
         rows.append({"variant": r.variant, "run": r.label, "H_over_dx": r.scales.H / r.dx,
                      "c0_factor": r.c0_factor, "t_contact_star": tc / r.scales.t,
                      "peak_raw": float(fx[w].max() / scale), "peak_filt": float(ff[w].max() / scale),
                      "peak_smooth": float(fs[w].max() / scale),
-                     "impulse_star": integral(t, fx, tc, tc + window_star * r.scales.t)
-                     / (scale * r.scales.t)})
+                     "impulse_star": integral(t, fx, tc, te) / (scale * r.scales.t)})
     if rows:
         print(f"\n== horizontal force on the downstream wall (F_right_wall) over rho g H^2/2, "
               f"first {window_star:g} t* after contact, filter {1e3 * filter_s:g} ms "

@@ -35,7 +35,8 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from metrics import CONTACT_FRACTION, DEFAULT_FILTER_S, DEFAULT_WINDOW_STAR, Scales  # noqa: E402
+from metrics import (CONTACT_FRACTION, DEFAULT_FILTER_S, DEFAULT_WINDOW_STAR,  # noqa: E402
+                     Scales, first_impact_window)
 from records import format_cell, load_probe, write_csv  # noqa: E402
 from run_folders import RunInfo, run_from_study  # noqa: E402
 from signals import dry_as_zero, integral, moving_average  # noqa: E402
@@ -83,13 +84,14 @@ def share_row(run: RunInfo, sensor: str) -> dict | None:
     wall = sensor == WALL
     unit = sc.p * sc.H / 2 if wall else sc.p            # rho g H^2/2 per metre, or rho g H
     q, c = dry_as_zero(p), dry_as_zero(c)
-    hit = np.nonzero(q > CONTACT_FRACTION * unit)[0]
-    if len(hit) == 0:
-        return None
-    t0 = float(t[hit[0]])
-    t1 = t0 + DEFAULT_WINDOW_STAR * sc.t
-    w = (t >= t0) & (t <= t1)
     fq, fc = moving_average(t, q, DEFAULT_FILTER_S), moving_average(t, c, DEFAULT_FILTER_S)
+    # Contact as analyse.py's: on the raw pressure of a sensor, on the filtered wall force.
+    window = first_impact_window(t, fq if wall else q, CONTACT_FRACTION * unit,
+                                 DEFAULT_WINDOW_STAR * sc.t)
+    if window is None:
+        return None
+    t0, t1 = window
+    w = (t >= t0) & (t <= t1)
     fp = fq - fc                                         # the pressure's part
     k = int(np.argmax(np.where(w, fq, -np.inf)))
     i_all, i_coll = integral(t, q, t0, t1), integral(t, c, t0, t1)
@@ -101,8 +103,9 @@ def share_row(run: RunInfo, sensor: str) -> dict | None:
             "window_complete": bool(t[-1] >= t1)}
 
 
-COLUMNS = ["run", "dx", "H_over_dx", "sensor", "peak", "peak_pressure_part", "peak_collisions",
-           "share_at_peak", "impulse_share", "window_complete"]
+FIGURES = ["peak", "peak_pressure_part", "peak_collisions", "share_at_peak", "impulse_share"]
+COLUMNS = ["run", "dx", "H_over_dx", "sensor", *FIGURES, "window_complete"]
+MEDIAN_COLUMNS = ["sensor", "H_over_dx", "runs", *FIGURES]
 
 
 def analyse(runs: list[RunInfo], out: Path | None) -> None:
@@ -132,8 +135,7 @@ def analyse(runs: list[RunInfo], out: Path | None) -> None:
             g = [r for r in rows if r["sensor"] == s and round(r["H_over_dx"]) == n]
             if not g:
                 continue
-            m = {k: float(np.median([r[k] for r in g])) for k in
-                 ("peak", "peak_pressure_part", "peak_collisions", "share_at_peak", "impulse_share")}
+            m = {k: float(np.median([r[k] for r in g])) for k in FIGURES}
             medians.append({"sensor": s, "H_over_dx": n, "runs": len(g), **m})
             lines.append(f"{s:13s} {n:5d} {len(g):4d} {m['peak']:6.3f} {m['peak_pressure_part']:6.3f} "
                          f"{m['peak_collisions']:6.3f} {m['share_at_peak']:8.3f} {m['impulse_share']:7.3f}")
@@ -143,9 +145,7 @@ def analyse(runs: list[RunInfo], out: Path | None) -> None:
         out.parent.mkdir(parents=True, exist_ok=True)
         Path(f"{out}.txt").write_text(text)
         write_csv(Path(f"{out}.csv"), rows, COLUMNS)
-        write_csv(Path(f"{out}_medians.csv"), medians,
-                  ["sensor", "H_over_dx", "runs", "peak", "peak_pressure_part", "peak_collisions",
-                   "share_at_peak", "impulse_share"])
+        write_csv(Path(f"{out}_medians.csv"), medians, MEDIAN_COLUMNS)
 
 
 def main() -> None:

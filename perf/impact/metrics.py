@@ -33,6 +33,17 @@ class Scales:
         return math.sqrt(self.H / self.g)
 
 
+def first_impact_window(t: np.ndarray, signal: np.ndarray, threshold: float, window_s: float,
+                        t_min: float = -math.inf) -> tuple[float, float] | None:
+    """The first impact's window [tc, tc + window_s]: tc is the first sample at or after t_min
+    where the signal exceeds the contact threshold; None when it never does."""
+    hit = np.nonzero((signal > threshold) & (t >= t_min))[0]
+    if len(hit) == 0:
+        return None
+    tc = float(t[hit[0]])
+    return tc, tc + window_s
+
+
 def impact_metrics(t: np.ndarray, p: np.ndarray, sc: Scales,
                    window_star: float = DEFAULT_WINDOW_STAR,
                    filter_s: float = DEFAULT_FILTER_S, t_min: float = -math.inf,
@@ -50,12 +61,10 @@ def impact_metrics(t: np.ndarray, p: np.ndarray, sc: Scales,
             "window_complete", "min_raw_star", "min_filt_star", "neg_longest_ms", "neg_total_ms",
             "neg_count"]
     res.update({k: nan for k in keys})
-    hit = np.nonzero((q > CONTACT_FRACTION * sc.p) & (t >= t_min))[0]
-    if len(hit) == 0:
+    window = first_impact_window(t, q, CONTACT_FRACTION * sc.p, window_star * sc.t, t_min)
+    if window is None:
         return res
-    i0 = hit[0]
-    tc = float(t[i0])
-    te = tc + window_star * sc.t
+    tc, te = window
     w = (t >= tc) & (t <= te)
     ir = np.argmax(np.where(w, q, -np.inf))
     jf = np.argmax(np.where(w, pf, -np.inf))
