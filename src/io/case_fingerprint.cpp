@@ -18,8 +18,10 @@ std::string case_fingerprint(const toml::table& root) {
         c->erase("description");
     std::ostringstream text;
     text << toml::toml_formatter(t);
-    const std::string s = text.str();
+    return sha256_hex(text.str());
+}
 
+std::string sha256_hex(const std::string& s) {
     unsigned char digest[EVP_MAX_MD_SIZE];
     unsigned int length = 0;
     if (EVP_Digest(s.data(), s.size(), digest, &length, EVP_sha256(), nullptr) != 1)

@@ -12,4 +12,7 @@ namespace sluice {
 // Comments, key order and spacing in the file therefore do not matter.
 std::string case_fingerprint(const toml::table& root);
 
+// SHA-256 (64 hex digits) of any bytes (the files a case reads besides itself).
+std::string sha256_hex(const std::string& bytes);
+
 } // namespace sluice

@@ -66,14 +66,23 @@ bool parse_face(const std::string& f, int dim, ProbeWall& w) {
 
 // The face or box of a force or sensor probe (`face` or `box`; at most one).
 std::optional<ProbeWall> read_probe_wall(const Section& s, const CaseConfig& c) {
-    const bool has_face = s.node("face") != nullptr, has_box = s.node("box") != nullptr;
-    if (!has_face && !has_box)
+    const bool has_face = s.node("face") != nullptr, has_box = s.node("box") != nullptr,
+               has_mesh = s.node("mesh") != nullptr;
+    if (!has_face && !has_box && !has_mesh)
         return std::nullopt;
-    s.require(!(has_face && has_box), "box", "give either face or box, not both");
-    s.require(c.walls == WallModel::dummy, has_face ? "face" : "box",
+    s.require(int(has_face) + int(has_box) + int(has_mesh) == 1, has_mesh ? "mesh" : "box",
+              "give one of face, box and mesh");
+    s.require(c.walls == WallModel::dummy, has_face ? "face" : (has_box ? "box" : "mesh"),
               "wall loads and wall sensors need dummy wall particles (walls.model = \"dummy\")");
     ProbeWall w;
-    if (has_face) {
+    if (has_mesh) {
+        const auto m = s.integer("mesh");
+        s.require(m && *m >= 0 && static_cast<std::size_t>(*m) < c.meshes.size(), "mesh",
+                  fmt::format("must be the index of a [[walls.meshes]] entry, 0 to {}; the case "
+                              "has {} meshes",
+                              c.meshes.empty() ? 0 : c.meshes.size() - 1, c.meshes.size()));
+        w.mesh = static_cast<int>(*m);
+    } else if (has_face) {
         const std::string f = *s.string("face");
         s.require(parse_face(f, c.dimension, w), "face",
                   fmt::format("unknown face \"{}\"; allowed: \"x-\", \"x+\", \"y-\", \"y+\"{}", f,
@@ -103,6 +112,9 @@ void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
                         "or box (a walls.boxes index)");
     p.wall = *w;
     p.reading = read_reading(s, c, ": the pressure integrated over the wall's surface");
+    s.require(p.wall.mesh < 0 || p.reading == SensorReading::force, "reading",
+              "a mesh's load is read from the momentum equation's wall pairs (reading = "
+              "\"force\"); the interpolated reading needs a tank face or a walls.boxes box");
     p.lo = s.triple("lo");
     p.hi = s.triple("hi");
     p.moment_about = s.triple("moment_about");
@@ -114,7 +126,12 @@ void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
     const double thick = std::ceil(support / c.dx - 1e-9) * c.dx;
     Triple wlo{}, whi{};
     for (std::size_t a = 0; a < dim; ++a) {
-        if (p.wall.box >= 0) {
+        if (p.wall.mesh >= 0) {
+            const WallMesh& m = c.meshes[static_cast<std::size_t>(p.wall.mesh)];
+            const double grow = m.role == MeshRole::surface ? thick : 0.0;
+            wlo[a] = m.shape->lo()[a] - grow;
+            whi[a] = m.shape->hi()[a] + grow;
+        } else if (p.wall.box >= 0) {
             wlo[a] = c.boxes[static_cast<std::size_t>(p.wall.box)].lo[a];
             whi[a] = c.boxes[static_cast<std::size_t>(p.wall.box)].hi[a];
         } else if (static_cast<int>(a) == p.wall.face_axis) {
@@ -137,7 +154,8 @@ void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
                    fmt::format("the force region touches no wall: on {}, {} = {} is {} the "
                                "{}'s wall particles, which lie in [{}, {}]",
                                kAxis[a], low ? "lo" : "hi", low ? lo : hi, low ? "above" : "below",
-                               p.wall.box >= 0 ? "box" : "face", wlo[a], whi[a]));
+                               p.wall.mesh >= 0 ? "mesh" : (p.wall.box >= 0 ? "box" : "face"),
+                               wlo[a], whi[a]));
         }
     }
 }
@@ -148,6 +166,9 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
     s.require(c.walls == WallModel::dummy, "diameter",
               "an area sensor sits on dummy wall particles (walls.model = \"dummy\")");
     const auto given = read_probe_wall(s, c);
+    s.require(!given || given->mesh < 0, "mesh",
+              "an area sensor sits on a tank face or a walls.boxes obstacle; on a mesh, read the "
+              "load of a part of it with a force probe (mesh, lo, hi)");
     const auto dim = static_cast<std::size_t>(c.dimension);
     const double eps = slack(c);
     double best = std::numeric_limits<double>::infinity();
@@ -241,6 +262,7 @@ void read_probes(const Section& root, CaseConfig& c) {
         only_for("reading", pressure || force);
         only_for("face", pressure || force);
         only_for("box", pressure || force);
+        only_for("mesh", force);
         only_for("lo", force);
         only_for("hi", force);
         only_for("moment_about", force);

@@ -67,6 +67,13 @@ CaseConfig read_case(const std::string& path, const std::vector<std::string>& ov
         case_file::apply_override(root, o, r);
     CaseConfig c = build(root, r, path);
     c.fingerprint = case_fingerprint(root);
+    // A shape's file is part of the case: a checkpoint continues only the same geometry.
+    if (!c.meshes.empty()) {
+        std::string all = c.fingerprint;
+        for (const auto& m : c.meshes)
+            all += m.digest;
+        c.fingerprint = sha256_hex(all);
+    }
     return c;
 }
 

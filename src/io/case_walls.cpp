@@ -5,6 +5,7 @@
 #include "sluice/physics/kernels.hpp"
 
 #include "case_limits.hpp"
+#include "case_meshes.hpp"
 
 #include <fmt/format.h>
 
@@ -162,6 +163,7 @@ void read_walls(const Section& s, CaseConfig& c) {
                               box_particles, layers, max_case_particles / 1e6));
         c.boxes.push_back(box);
     }
+    read_wall_meshes(s, c);
 }
 
 // Fluid must start on the inner side of every wall-carrying tank face.

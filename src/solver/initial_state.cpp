@@ -1,5 +1,7 @@
 #include "sluice/solver/initial_state.hpp"
 
+#include "sluice/solver/mesh_walls.hpp"
+
 #include "initial_lattice.hpp"
 
 #include <algorithm>
@@ -163,7 +165,7 @@ std::size_t block_particles(const CaseConfig& cfg, const FluidBlock& b) {
         n[d] = block_lattice_count(cfg, b, static_cast<int>(d));
         all *= static_cast<std::size_t>(n[d]);
     }
-    if (b.shape == BlockShape::box)
+    if (b.shape == BlockShape::box && cfg.meshes.empty())
         return all;
     std::size_t total = 0;
     const auto count_in = [&](auto dim) {
@@ -178,7 +180,7 @@ std::size_t block_particles(const CaseConfig& cfg, const FluidBlock& b) {
             Triple at{};
             for (int d = 0; d < D; ++d)
                 at[static_cast<std::size_t>(d)] = x[d];
-            total += inside_block_shape(b, at, D) ? 1 : 0;
+            total += inside_block_shape(b, at, D) && !fluid_site_taken_by_mesh(cfg, at) ? 1 : 0;
         });
     };
     if (cfg.dimension == 2)
@@ -293,6 +295,8 @@ ParticleId visit_fluid_blocks(const CaseConfig& cfg, const Eos& eos, ParticleId 
                 at[d] = x[d];
             if (!inside_block_shape(b, at, D))
                 return;
+            if (!cfg.meshes.empty() && fluid_site_taken_by_mesh(cfg, at))
+                return;
             const double lattice_up = x[up];
             if (settle) {
                 const auto row = static_cast<std::size_t>(site[up]);
@@ -386,7 +390,7 @@ ParticleId visit_wall_particles(const CaseConfig& cfg, int layers, ParticleId fi
                 sink({next_id++, Kind::wall, x, Vec<D>::Zero(), Real(cfg.rho0), Real(mass)});
         });
     }
-    return next_id;
+    return visit_mesh_wall_particles<D>(cfg, layers, next_id, sink);
 }
 
 namespace {
@@ -439,7 +443,10 @@ std::size_t count_wall_particles(const CaseConfig& cfg, int layers) {
     std::array<int, 3> n{};
     for (const WallBox& b : cfg.boxes)
         boxes += box_particles(cfg, b, layers, n);
-    return outer - inner + boxes;
+    std::size_t meshes = 0;
+    for (std::size_t k : count_mesh_wall_particles(cfg, layers))
+        meshes += k;
+    return outer - inner + boxes + meshes;
 }
 
 template ParticleId visit_fluid_blocks<2>(const CaseConfig&, const Eos&, ParticleId,

@@ -4,6 +4,8 @@
 
 #include "particle_messages.hpp"
 
+#include "sluice/physics/initial_profiles.hpp"
+#include "sluice/physics/kernels.hpp"
 #include "sluice/physics/probes.hpp"
 #include "sluice/physics/wall_loads.hpp"
 
@@ -37,6 +39,12 @@ double geometry_eps(const CaseConfig& cfg) {
     return 1e-9 * size;
 }
 
+// How deep the wall layers behind a surface reach: layers x dx.
+template <int D>
+double wall_layer_depth(const CaseConfig& cfg) {
+    return wall_layers(kernel_support_factor(cfg.kernel) * cfg.h_over_dx * cfg.dx, cfg.dx) * cfg.dx;
+}
+
 // The region of a force probe: the half-space behind a tank face (its layers and the corners
 // it shares) or an obstacle box, cut to the probe's lo/hi.
 template <int D>
@@ -47,7 +55,12 @@ Box<D> force_box(const CaseConfig& cfg, const ProbeConfig& probe) {
     for (int a = 0; a < D; ++a) {
         const auto k = static_cast<std::size_t>(a);
         double l = -inf, h = inf;
-        if (probe.wall.box >= 0) {
+        if (probe.wall.mesh >= 0) {
+            const WallMesh& m = cfg.meshes[static_cast<std::size_t>(probe.wall.mesh)];
+            const double grow = m.role == MeshRole::surface ? wall_layer_depth<D>(cfg) : 0.0;
+            l = m.shape->lo()[k] - grow - eps;
+            h = m.shape->hi()[k] + grow + eps;
+        } else if (probe.wall.box >= 0) {
             const WallBox& b = cfg.boxes[static_cast<std::size_t>(probe.wall.box)];
             l = b.lo[k] - eps;
             h = b.hi[k] + eps;

@@ -4,6 +4,8 @@
 #include "sluice/io/case_reader.hpp"
 #include "sluice/io/errors.hpp"
 
+#include "shape_files.hpp"
+
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
@@ -58,6 +60,10 @@ normal = [-1, 0]
 lo = [1.0, 0]
 hi = [1.2, 0.2]
 
+[[walls.meshes]]
+file = "MESHFILE"
+role = "solid"
+
 [time]
 end_time = 0.5
 
@@ -76,9 +82,20 @@ name = "F"
 type = "surge_front"
 )";
 
+// The base case's mesh: a box cut by z = 0 into the square [1.4, 1.6] x [0.3, 0.5].
+std::string mesh_file() {
+    static const std::string path = [] {
+        const std::string p = sluice::test::temp_path("schema_box.stl");
+        sluice::test::write_ascii_stl(sluice::test::box_shape({1.4, 0.3, -1}, {1.6, 0.5, 1}), p);
+        return p;
+    }();
+    return path;
+}
+
 std::string base(const std::string& scheme) {
     std::string t = kBase;
     t.replace(t.find("SCHEME"), 6, scheme);
+    t.replace(t.find("MESHFILE"), 8, mesh_file());
     return t;
 }
 
@@ -99,7 +116,8 @@ bool is_toml_value(const std::string& text) {
 // The --set path of a key in the base case: entries of arrays of tables by index (a probe of
 // the kind the key needs).
 std::string set_path(const std::string& table, const std::string& key, const std::string& when) {
-    if (table == "blocks" || table == "walls.planes" || table == "walls.boxes")
+    if (table == "blocks" || table == "walls.planes" || table == "walls.boxes" ||
+        table == "walls.meshes")
         return table + ".0." + key;
     if (table == "probes") {
         int i = 0;
@@ -131,15 +149,12 @@ std::vector<std::string> when_overrides(const std::string& table, const std::str
 }
 
 // Keys whose default is not a TOML value: computed from other keys, or "absent" means off.
-const std::set<std::string> kComputedDefaults = {"case.name",         "domain.periodic",
-                                                 "fluid.gravity",     "blocks.velocity",
-                                                 "numerics.dt",       "walls.tank_faces",
-                                                 "probes.diameter",   "probes.face",
-                                                 "probes.box",        "probes.lo",
-                                                 "probes.hi",         "probes.moment_about",
-                                                 "probes.y",          "probes.min_thickness",
-                                                 "limits.max_speed",  "limits.min_density",
-                                                 "limits.max_density"};
+const std::set<std::string> kComputedDefaults = {
+    "case.name",        "domain.periodic",     "fluid.gravity",     "blocks.velocity",
+    "numerics.dt",      "walls.tank_faces",    "probes.diameter",   "probes.face",
+    "probes.box",       "probes.lo",           "probes.mesh",       "walls.meshes.translation",
+    "probes.hi",        "probes.moment_about", "probes.y",          "probes.min_thickness",
+    "limits.max_speed", "limits.min_density",  "limits.max_density"};
 
 } // namespace
 

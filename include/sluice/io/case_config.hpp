@@ -2,9 +2,11 @@
 // Everything a case file says, after validation. Dimension-agnostic: 3-component arrays whose
 // last component is ignored (and must be absent from the file) in 2-D.
 // Every field is documented for users in docs/CASE_REFERENCE.md; keep the two in step.
+#include "sluice/geometry/surface_index.hpp"
 #include "sluice/physics/options.hpp"
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -87,11 +89,37 @@ struct WallBox {
     bool operator==(const WallBox&) const = default;
 };
 
+// What a wall mesh is: a closed solid (its inside is wall) or a surface (wall behind it).
+enum class MeshRole { solid, surface };
+
+// A wall shape read from a file ([[walls.meshes]]): the placed shape and where it came from.
+struct WallMesh {
+    std::string file; // as the case gives it
+    std::string path; // resolved against the case file's folder
+    MeshRole role = MeshRole::solid;
+    double scale = 1;
+    Triple rotation{}; // degrees about x, y, z (2-D: only z)
+    Triple translation{};
+    bool flip_normals = false;
+    double section_z = 0; // 2-D case from a triangle mesh: the cutting plane
+    std::string digest;   // SHA-256 of the file's bytes: part of the case fingerprint
+    // The placed shape with its queries, built by the case reader (shared: a CaseConfig is
+    // copied freely, the shape is read-only).
+    std::shared_ptr<const SurfaceIndex> shape;
+
+    bool operator==(const WallMesh& o) const {
+        return file == o.file && path == o.path && role == o.role && scale == o.scale &&
+               rotation == o.rotation && translation == o.translation &&
+               flip_normals == o.flip_normals && section_z == o.section_z && digest == o.digest;
+    }
+};
+
 // A wall surface a probe refers to: a tank face or an obstacle box (or one face of it).
 struct ProbeWall {
     int face_axis = -1;     // tank face "x+" etc.: axis (0, 1, 2); -1 = none
     bool face_high = false; // the "+" face
     int box = -1;           // walls.boxes index; -1 = none
+    int mesh = -1;          // walls.meshes index; -1 = none
 
     bool operator==(const ProbeWall&) const = default;
 };
@@ -216,6 +244,7 @@ struct CaseConfig {
     std::vector<std::string> tank_faces; // which faces carry walls: "x-","x+","y-","y+","z-","z+"
     std::vector<WallPlane> planes;       // extra reflective planes
     std::vector<WallBox> boxes;          // dummy walls only: solid obstacles
+    std::vector<WallMesh> meshes;        // dummy walls only: shapes from mesh or vertex files
     double restitution = 1.0;            // reflective walls: normal velocity kept after a bounce
     bool no_slip = true;                 // dummy walls: no-slip (Adami) or free-slip
 

@@ -44,6 +44,10 @@ SCHEME_BASES = {"wcsph": ("db2", ROOT / "cases" / "dam_break_2d.toml"),
 SAMPLE_ENTRIES = {
     "walls.planes": {"point": [0.0, 0.0], "normal": [1.0, 0.0]},
     "walls.boxes": {"lo": [1.0, 0.0], "hi": [1.2, 0.2]},
+    # The obstacle column's STL cut by z = 0.2: a square in the tank, clear of the fluid (the
+    # path is relative to generated/).
+    "walls.meshes": {"file": "../../../../cases/meshes/obstacle_box_3d.stl", "role": "solid",
+                     "section_z": 0.2},
     "force": {"name": "F", "type": "force", "face": "x+"},
     # An area sensor on the x- face of the 2-D bases' tank (tank_lo = [0, 0]), 0.1 m up.
     "area": {"name": "A", "type": "pressure", "position": [0.0, 0.1], "diameter": 0.02},
@@ -424,7 +428,7 @@ def toml_value(text):
 def locate(doc, spec):
     """The table (dict) holding the key in `doc`, made valid for it, and its display path."""
     table = spec["table"]
-    if table in ("blocks", "probes", "walls.planes", "walls.boxes"):
+    if table in ("blocks", "probes", "walls.planes", "walls.boxes", "walls.meshes"):
         parent = doc
         *outer, last = table.split(".")
         for p in outer:

@@ -1,0 +1,149 @@
+// [[walls.meshes]] (case_meshes.hpp).
+#include "case_meshes.hpp"
+
+#include "sluice/geometry/shape_report.hpp"
+#include "sluice/io/case_reader.hpp"
+#include "sluice/physics/kernels.hpp"
+
+#include "case_fingerprint.hpp"
+#include "case_limits.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace sluice::case_file {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::pair<std::string, MeshRole>> kRoles = {{"solid", MeshRole::solid},
+                                                              {"surface", MeshRole::surface}};
+
+bool is_vertex_file(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    return ext == ".csv" || ext == ".txt" || ext == ".dat";
+}
+
+// The shape as the case places it; GeometryError becomes a refusal of `file`.
+SurfaceGeometry load(const Section& s, const WallMesh& m, int dimension) {
+    const GeometryLimits limits;
+    try {
+        SurfaceGeometry g;
+        if (is_vertex_file(m.path)) {
+            s.require(dimension == 2, "file",
+                      "a vertex file describes a 2-D polyline; a 3-D case needs a triangle mesh "
+                      "(.stl, .obj, .ply, .off)");
+            g = read_vertex_file(m.path, limits);
+        } else {
+            g = read_triangle_mesh(m.path, limits);
+            if (dimension == 2)
+                g = section_by_plane(g, m.section_z);
+        }
+        Placement p;
+        p.scale = m.scale;
+        p.rotation_deg = m.rotation;
+        p.translation = m.translation;
+        p.flip = m.flip_normals;
+        return placed(std::move(g), p);
+    } catch (const GeometryError& e) {
+        s.fail("file", e.what());
+    }
+}
+
+std::string file_digest(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return sha256_hex(bytes);
+}
+
+} // namespace
+
+void read_wall_meshes(const Section& walls, CaseConfig& c) {
+    const fs::path folder = fs::path(c.source_file).parent_path();
+    const auto dim = static_cast<std::size_t>(c.dimension);
+    const double eps = slack(c);
+    for (const auto& s : walls.entries("meshes")) {
+        s.require(c.walls == WallModel::dummy, "file",
+                  "wall meshes are made of dummy wall particles: they need walls.model = "
+                  "\"dummy\"");
+        WallMesh m;
+        m.file = *s.string("file");
+        if (m.file.empty())
+            s.fail("file", "must name a file");
+        m.path = fs::path(m.file).is_absolute() ? m.file : (folder / m.file).string();
+        if (!s.string("role"))
+            s.fail("role", "missing required key: \"solid\" (a closed obstacle) or \"surface\" "
+                           "(walls behind it, opposite its normals)");
+        m.role = s.choice("role", m.role, kRoles);
+        m.scale = s.number("scale", 1.0);
+        if (const auto* r = s.node("rotation")) {
+            if (c.dimension == 2) {
+                m.rotation[2] = s.reader().as_number(*r, s.key("rotation"));
+            } else {
+                m.rotation = s.reader().as_triple(*r, s.key("rotation"));
+            }
+            for (double a : m.rotation)
+                s.require(std::abs(a) <= 360, "rotation",
+                          fmt::format("angles are in degrees, within [-360, 360]; got {}", a));
+        }
+        m.translation = s.triple("translation").value_or(Triple{});
+        m.flip_normals = s.boolean("flip_normals").value_or(false);
+        if (s.node("section_z") != nullptr)
+            s.require(c.dimension == 2 && !is_vertex_file(m.path), "section_z",
+                      "only a 2-D case cut from a triangle mesh file has a section plane");
+        m.section_z = s.number("section_z", 0.0);
+
+        SurfaceGeometry g = load(s, m, c.dimension);
+        m.digest = file_digest(m.path);
+        // Degenerate: smaller than a millionth of dx (area: of dx^2).
+        const double tiny = c.dimension == 3 ? 1e-12 * c.dx * c.dx : 1e-6 * c.dx;
+        auto shape = std::make_shared<SurfaceIndex>(std::move(g));
+        const ShapeReport r = report_shape(*shape, tiny);
+        s.require(r.degenerate * 100 <= r.elements, "file",
+                  fmt::format("\"{}\": {} of its {} {} are degenerate (size below {:g}); repair "
+                              "the mesh",
+                              m.file, r.degenerate, r.elements,
+                              c.dimension == 3 ? "triangles" : "segments", tiny));
+        if (m.role == MeshRole::solid) {
+            s.require(r.closed, "role",
+                      fmt::format("\"{}\" is not closed (some {} are not shared by exactly two "
+                                  "{} running opposite ways), so it has no inside: use role = "
+                                  "\"surface\", or close the mesh",
+                                  m.file, c.dimension == 3 ? "edges" : "vertices",
+                                  c.dimension == 3 ? "triangles" : "segments"));
+            s.require(r.outward, "flip_normals",
+                      fmt::format("the normals of the solid \"{}\" point inwards (its signed "
+                                  "volume is {:g}); set flip_normals = {}",
+                                  m.file, r.volume, m.flip_normals ? "false" : "true"));
+        }
+        // The wall layers of a surface lie up to a kernel support behind it.
+        const double reach = m.role == MeshRole::surface
+                                 ? std::ceil(kernel_support_factor(c.kernel) * c.h_over_dx) * c.dx
+                                 : 0.0;
+        for (std::size_t a = 0; a < dim; ++a) {
+            s.require(r.lo[a] - reach >= c.domain_lo[a] - eps &&
+                          r.hi[a] + reach <= c.domain_hi[a] + eps,
+                      "translation",
+                      fmt::format("\"{}\" as placed spans {} = [{:g}, {:g}]{}, outside the domain "
+                                  "[{:g}, {:g}]",
+                                  m.file, kAxis[a], r.lo[a], r.hi[a],
+                                  reach > 0 ? fmt::format(" (with its wall layers, {:g} m more "
+                                                          "each side)",
+                                                          reach)
+                                            : "",
+                                  c.domain_lo[a], c.domain_hi[a]));
+        }
+        m.shape = std::move(shape);
+        c.meshes.push_back(std::move(m));
+    }
+}
+
+} // namespace sluice::case_file

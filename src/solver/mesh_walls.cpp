@@ -1,0 +1,65 @@
+// Mesh walls and the fluid sites they take (mesh_walls.hpp).
+#include "sluice/solver/mesh_walls.hpp"
+
+#include "sluice/geometry/shape_particles.hpp"
+
+#include <cmath>
+
+namespace sluice {
+
+namespace {
+
+ShapeRole role_of(const WallMesh& m) {
+    return m.role == MeshRole::solid ? ShapeRole::solid : ShapeRole::surface;
+}
+
+LatticeSpec lattice_of(const CaseConfig& cfg, const WallMesh& m) {
+    return {cfg.dx, m.shape->lo(), cfg.dimension};
+}
+
+} // namespace
+
+template <int D>
+ParticleId visit_mesh_wall_particles(const CaseConfig& cfg, int layers, ParticleId first_id,
+                                     const InitialSink<D>& sink) {
+    ParticleId next_id = first_id;
+    const double mass = cfg.rho0 * std::pow(cfg.dx, D);
+    for (const WallMesh& m : cfg.meshes)
+        visit_wall_sites(*m.shape, role_of(m), lattice_of(cfg, m), layers, [&](const WallSite& w) {
+            Vec<D> x;
+            for (int d = 0; d < D; ++d)
+                x[d] = Real(w.x[static_cast<std::size_t>(d)]);
+            sink({next_id++, Kind::wall, x, Vec<D>::Zero(), Real(cfg.rho0), Real(mass)});
+        });
+    return next_id;
+}
+
+std::vector<std::size_t> count_mesh_wall_particles(const CaseConfig& cfg, int layers) {
+    std::vector<std::size_t> counts;
+    for (const WallMesh& m : cfg.meshes) {
+        std::size_t n = 0;
+        visit_wall_sites(*m.shape, role_of(m), lattice_of(cfg, m), layers,
+                         [&](const WallSite&) { ++n; });
+        counts.push_back(n);
+    }
+    return counts;
+}
+
+bool fluid_site_taken_by_mesh(const CaseConfig& cfg, const Triple& x) {
+    const double keep = 0.5 * cfg.dx * (1 - 1e-9);
+    for (const WallMesh& m : cfg.meshes) {
+        const ClosestPoint c = m.shape->closest(x);
+        if (c.distance < keep)
+            return true;
+        if (m.role == MeshRole::solid ? m.shape->inside(x) : c.side < 0)
+            return true;
+    }
+    return false;
+}
+
+template ParticleId visit_mesh_wall_particles<2>(const CaseConfig&, int, ParticleId,
+                                                 const InitialSink<2>&);
+template ParticleId visit_mesh_wall_particles<3>(const CaseConfig&, int, ParticleId,
+                                                 const InitialSink<3>&);
+
+} // namespace sluice
