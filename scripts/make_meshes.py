@@ -1142,12 +1142,18 @@ def check_mesh(path, expect, fresh):
         if dev > tol:
             ok = False
             msgs.append("FAIL facet normals")
-    if fresh is not None:
-        same = Path(path).read_bytes() == fresh
-        msgs.append("bytes match a fresh generation" if same else
-                    "FAIL bytes differ from a fresh generation")
-        ok = ok and same
-    return ok, msgs
+    same = matches_fresh(path, fresh, msgs)
+    return ok and same, msgs
+
+
+def matches_fresh(path, fresh, msgs):
+    """True unless `fresh` (bytes of a new generation) is given and the file differs."""
+    if fresh is None:
+        return True
+    same = Path(path).read_bytes() == fresh
+    msgs.append("bytes match a fresh generation" if same else
+                "FAIL bytes differ from a fresh generation")
+    return same
 
 
 def read_vertex_rows(path):
@@ -1197,12 +1203,8 @@ def check_vertex_file(path, ns, fresh):
         if (ns.ramp is not None or ns.sill is not None) and not up:
             ok = False
             msgs.append("FAIL a bed's normals must point up")
-    if fresh is not None:
-        same = Path(path).read_bytes() == fresh
-        msgs.append("bytes match a fresh generation" if same else
-                    "FAIL bytes differ from a fresh generation")
-        ok = ok and same
-    return ok, msgs
+    same = matches_fresh(path, fresh, msgs)
+    return ok and same, msgs
 
 
 def check_dir(directory):

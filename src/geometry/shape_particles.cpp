@@ -116,17 +116,4 @@ void visit_wall_sites(const SurfaceIndex& shape, ShapeRole role, const LatticeSp
         });
 }
 
-void visit_inside_sites(const SurfaceIndex& shape, const LatticeSpec& l,
-                        const std::function<void(const Point3&)>& f) {
-    if (!shape.closed())
-        throw GeometryError("only a closed shape can be filled");
-    const IndexBox box = index_box(shape.lo(), shape.hi(), 0.0, l);
-    for_each_site_in_tiles(
-        box, l, [](const Point3&, double) { return true; },
-        [&](const Point3& x) {
-            if (shape.inside(x))
-                f(x);
-        });
-}
-
 } // namespace sluice

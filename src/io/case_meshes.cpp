@@ -3,6 +3,7 @@
 
 #include "sluice/geometry/shape_report.hpp"
 #include "sluice/io/case_reader.hpp"
+#include "sluice/physics/initial_profiles.hpp"
 #include "sluice/physics/kernels.hpp"
 
 #include "case_fingerprint.hpp"
@@ -125,9 +126,10 @@ void read_wall_meshes(const Section& walls, CaseConfig& c) {
                                   m.file, r.volume, m.flip_normals ? "false" : "true"));
         }
         // The wall layers of a surface lie up to a kernel support behind it.
-        const double reach = m.role == MeshRole::surface
-                                 ? std::ceil(kernel_support_factor(c.kernel) * c.h_over_dx) * c.dx
-                                 : 0.0;
+        const double reach =
+            m.role == MeshRole::surface
+                ? wall_layers(kernel_support_factor(c.kernel) * c.h_over_dx * c.dx, c.dx) * c.dx
+                : 0.0;
         for (std::size_t a = 0; a < dim; ++a) {
             s.require(r.lo[a] - reach >= c.domain_lo[a] - eps &&
                           r.hi[a] + reach <= c.domain_hi[a] + eps,

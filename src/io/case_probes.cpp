@@ -64,7 +64,18 @@ bool parse_face(const std::string& f, int dim, ProbeWall& w) {
     return true;
 }
 
-// The face or box of a force or sensor probe (`face` or `box`; at most one).
+// An index into an array of tables of the case ([[walls.boxes]], [[walls.meshes]]) given by
+// key k: refused unless it names one of its `count` entries.
+int read_entry_index(const Section& s, std::string_view k, std::string_view array,
+                     std::string_view plural, std::size_t count) {
+    const auto i = s.integer(k);
+    s.require(i && *i >= 0 && static_cast<std::size_t>(*i) < count, k,
+              fmt::format("must be the index of a [[{}]] entry, 0 to {}; the case has {} {}", array,
+                          count == 0 ? 0 : count - 1, count, plural));
+    return static_cast<int>(*i);
+}
+
+// The face, box or mesh of a force or sensor probe (at most one).
 std::optional<ProbeWall> read_probe_wall(const Section& s, const CaseConfig& c) {
     const bool has_face = s.node("face") != nullptr, has_box = s.node("box") != nullptr,
                has_mesh = s.node("mesh") != nullptr;
@@ -76,12 +87,7 @@ std::optional<ProbeWall> read_probe_wall(const Section& s, const CaseConfig& c) 
               "wall loads and wall sensors need dummy wall particles (walls.model = \"dummy\")");
     ProbeWall w;
     if (has_mesh) {
-        const auto m = s.integer("mesh");
-        s.require(m && *m >= 0 && static_cast<std::size_t>(*m) < c.meshes.size(), "mesh",
-                  fmt::format("must be the index of a [[walls.meshes]] entry, 0 to {}; the case "
-                              "has {} meshes",
-                              c.meshes.empty() ? 0 : c.meshes.size() - 1, c.meshes.size()));
-        w.mesh = static_cast<int>(*m);
+        w.mesh = read_entry_index(s, "mesh", "walls.meshes", "meshes", c.meshes.size());
     } else if (has_face) {
         const std::string f = *s.string("face");
         s.require(parse_face(f, c.dimension, w), "face",
@@ -92,12 +98,7 @@ std::optional<ProbeWall> read_probe_wall(const Section& s, const CaseConfig& c) 
                   fmt::format("the tank face \"{}\" carries no wall (walls.tank_faces = [{}])", f,
                               join_list(c.tank_faces)));
     } else {
-        const auto b = s.integer("box");
-        s.require(b && *b >= 0 && static_cast<std::size_t>(*b) < c.boxes.size(), "box",
-                  fmt::format("must be the index of a [[walls.boxes]] entry, 0 to {}; the case "
-                              "has {} boxes",
-                              c.boxes.empty() ? 0 : c.boxes.size() - 1, c.boxes.size()));
-        w.box = static_cast<int>(*b);
+        w.box = read_entry_index(s, "box", "walls.boxes", "boxes", c.boxes.size());
     }
     return w;
 }

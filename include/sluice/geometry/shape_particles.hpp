@@ -1,6 +1,6 @@
 #pragma once
 // Where a shape's particles go (SPH set-up, no physics): the dummy wall layers behind a
-// surface or inside a solid, and the lattice sites a closed shape fills with fluid.
+// surface or inside a solid.
 //
 // Wall layers. The lattice sites origin + (k + 1/2) dx within `layers` dx behind the surface
 // (inside a solid; on the side opposite the normals of a surface) are taken, and each site at
@@ -42,10 +42,5 @@ struct LatticeSpec {
 // sites of a tile, x fastest), the same on every rank and machine.
 void visit_wall_sites(const SurfaceIndex& shape, ShapeRole role, const LatticeSpec& lattice,
                       int layers, const std::function<void(const WallSite&)>& f);
-
-// Calls f for every lattice site inside a closed shape, x fastest, over the lattice sites of
-// its bounding box.
-void visit_inside_sites(const SurfaceIndex& shape, const LatticeSpec& lattice,
-                        const std::function<void(const Point3&)>& f);
 
 } // namespace sluice
