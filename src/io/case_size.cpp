@@ -3,6 +3,7 @@
 #include "case_size.hpp"
 
 #include "sluice/io/case_reader.hpp"
+#include "sluice/io/wall_extent.hpp"
 #include "sluice/physics/kernels.hpp"
 
 #include "case_limits.hpp"
@@ -73,9 +74,9 @@ void check_case_size(const Section& root, const CaseConfig& c) {
     for (std::size_t a = 0; a < dim; ++a) {
         double lo = c.domain_lo[a], hi = c.domain_hi[a];
         if (!c.periodic[a]) {
-            const double wall = c.walls == WallModel::dummy ? layers * c.dx : 0.0;
-            lo = std::min(lo, c.tank_lo[a] - wall) - support;
-            hi = std::max(hi, c.tank_hi[a] + wall) + support;
+            const AxisExtent e = wall_extent(c, a);
+            lo = e.lo - support;
+            hi = e.hi + support;
         }
         const double n = std::max(1.0, std::floor((hi - lo) / support));
         if (dim == 3 && n > kMaxCellsPerAxis3d)

@@ -4,6 +4,7 @@
 #include "sluice/solver/run.hpp"
 
 #include "sluice/core/particles.hpp"
+#include "sluice/io/wall_extent.hpp"
 #include "sluice/physics/kernels.hpp"
 #include "sluice/physics/timestep.hpp"
 #include "sluice/solver/built_geometry.hpp"
@@ -121,12 +122,9 @@ CaseInfo describe_case(const CaseConfig& cfg) {
     info.dt_estimate = cfg.fixed_dt ? *cfg.fixed_dt : l.min();
     info.cells = 1;
     for (int d = 0; d < cfg.dimension; ++d) {
-        const double wall = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
-        const double extent = cfg.periodic[d]
-                                  ? cfg.domain_hi[d] - cfg.domain_lo[d]
-                                  : std::max(cfg.domain_hi[d], cfg.tank_hi[d] + wall) -
-                                        std::min(cfg.domain_lo[d], cfg.tank_lo[d] - wall) +
-                                        2 * info.support;
+        const AxisExtent e = wall_extent(cfg, static_cast<std::size_t>(d));
+        const double extent =
+            cfg.periodic[d] ? cfg.domain_hi[d] - cfg.domain_lo[d] : e.hi - e.lo + 2 * info.support;
         info.cells *= static_cast<std::size_t>(std::max(1.0, std::floor(extent / info.support)));
     }
 
