@@ -140,6 +140,9 @@ struct SurfaceIndex::Impl {
     std::size_t element_of(Segments::const_iterator it) const {
         return static_cast<std::size_t>(it - segments.begin());
     }
+    Point3 anchor(std::size_t e) const {
+        return g.vertices[g.dimension == 3 ? g.triangles[e][0] : g.segments[e][0]];
+    }
 };
 
 SurfaceIndex::SurfaceIndex(SurfaceGeometry geometry) : impl_(std::make_unique<Impl>()) {
@@ -171,6 +174,8 @@ SurfaceIndex::SurfaceIndex(SurfaceGeometry geometry) : impl_(std::make_unique<Im
                                      point(g.vertices[t[2]]));
         }
         m.tri_tree = std::make_unique<TriTree>(m.triangles.begin(), m.triangles.end());
+        // Built now, not lazily at the first query: the step queries from many threads.
+        m.tri_tree->build();
         m.tri_tree->accelerate_distance_queries();
     } else {
         m.segments.reserve(g.segments.size());
@@ -180,6 +185,7 @@ SurfaceIndex::SurfaceIndex(SurfaceGeometry geometry) : impl_(std::make_unique<Im
             m.segments.emplace_back(point(g.vertices[s[0]]), point(g.vertices[s[1]]));
         }
         m.seg_tree = std::make_unique<SegTree>(m.segments.begin(), m.segments.end());
+        m.seg_tree->build();
         m.seg_tree->accelerate_distance_queries();
     }
     m.closed = is_closed(g);
@@ -278,7 +284,8 @@ bool SurfaceIndex::inside(const Point3& x) const {
     return in;
 }
 
-std::optional<Crossing> SurfaceIndex::first_crossing(const Point3& a, const Point3& b) const {
+std::optional<Crossing> SurfaceIndex::first_crossing(const Point3& a, const Point3& b,
+                                                     CrossingSense sense) const {
     const Impl& m = *impl_;
     const Point3 d = minus(b, a);
     const double len2 = dot(d, d);
@@ -286,9 +293,11 @@ std::optional<Crossing> SurfaceIndex::first_crossing(const Point3& a, const Poin
         return std::nullopt;
     std::optional<Crossing> best;
     const auto consider = [&](const P3& p, std::size_t e) {
+        if (sense == CrossingSense::entering_front && !(dot(d, m.normals[e]) < 0))
+            return;
         const double f = std::clamp(dot(minus(triple(p), a), d) / len2, 0.0, 1.0);
         if (!best || f < best->fraction || (f == best->fraction && e < best->element))
-            best = Crossing{triple(p), m.normals[e], f, e};
+            best = Crossing{triple(p), m.normals[e], m.anchor(e), f, e};
     };
     if (m.tri_tree) {
         const K::Segment_3 q(point(a), point(b));

@@ -72,9 +72,9 @@ void read_wall_meshes(const Section& walls, CaseConfig& c) {
     const auto dim = static_cast<std::size_t>(c.dimension);
     const double eps = slack(c);
     for (const auto& s : walls.entries("meshes")) {
-        s.require(c.walls == WallModel::dummy, "file",
-                  "wall meshes are made of dummy wall particles: they need walls.model = "
-                  "\"dummy\"");
+        s.require(c.walls != WallModel::none, "file",
+                  "a wall mesh is a wall: it needs walls.model = \"dummy\" (wall particles "
+                  "laid behind it) or \"reflective\" (its faces reflect)");
         WallMesh m;
         m.file = *s.string("file");
         if (m.file.empty())
@@ -125,24 +125,14 @@ void read_wall_meshes(const Section& walls, CaseConfig& c) {
                                   "volume is {:g}); set flip_normals = {}",
                                   m.file, r.volume, m.flip_normals ? "false" : "true"));
         }
-        // The wall layers of a surface lie up to a kernel support behind it.
-        const double reach =
-            m.role == MeshRole::surface
-                ? wall_layers(kernel_support_factor(c.kernel) * c.h_over_dx * c.dx, c.dx) * c.dx
-                : 0.0;
-        for (std::size_t a = 0; a < dim; ++a) {
-            s.require(r.lo[a] - reach >= c.domain_lo[a] - eps &&
-                          r.hi[a] + reach <= c.domain_hi[a] + eps,
-                      "translation",
-                      fmt::format("\"{}\" as placed spans {} = [{:g}, {:g}]{}, outside the domain "
-                                  "[{:g}, {:g}]",
-                                  m.file, kAxis[a], r.lo[a], r.hi[a],
-                                  reach > 0 ? fmt::format(" (with its wall layers, {:g} m more "
-                                                          "each side)",
-                                                          reach)
-                                            : "",
-                                  c.domain_lo[a], c.domain_hi[a]));
-        }
+        // The shape lies in the domain; a surface's wall layers may reach past it, as the
+        // tank's do (the solver's grid covers them: wall_extent.hpp).
+        for (std::size_t a = 0; a < dim; ++a)
+            s.require(
+                r.lo[a] >= c.domain_lo[a] - eps && r.hi[a] <= c.domain_hi[a] + eps, "translation",
+                fmt::format("\"{}\" as placed spans {} = [{:g}, {:g}], outside the domain "
+                            "[{:g}, {:g}]",
+                            m.file, kAxis[a], r.lo[a], r.hi[a], c.domain_lo[a], c.domain_hi[a]));
         m.shape = std::move(shape);
         c.meshes.push_back(std::move(m));
     }

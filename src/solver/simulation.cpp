@@ -1,10 +1,12 @@
 #include "sluice/solver/simulation.hpp"
 
 #include "sluice/io/errors.hpp"
+#include "sluice/io/wall_extent.hpp"
 #include "sluice/physics/acoustic_damper.hpp"
 #include "sluice/solver/initial_share.hpp"
 #include "sluice/solver/initial_state.hpp"
 #include "sluice/solver/particle_exit.hpp"
+#include "sluice/solver/reflective_walls.hpp"
 
 #include "schemes/projection/projection_scheme.hpp"
 #include "schemes/wcsph/wcsph_scheme.hpp"
@@ -35,38 +37,13 @@ Vec<D> to_vec(const Triple& t) {
     return v;
 }
 
-template <int D>
-std::vector<Plane<D>> reflective_planes(const CaseConfig& cfg) {
-    std::vector<Plane<D>> planes;
-    if (cfg.walls == WallModel::reflective) {
-        static constexpr const char* names[3][2] = {{"x-", "x+"}, {"y-", "y+"}, {"z-", "z+"}};
-        for (int d = 0; d < D; ++d)
-            for (int side = 0; side < 2; ++side) {
-                const std::string face = names[d][side];
-                if (std::find(cfg.tank_faces.begin(), cfg.tank_faces.end(), face) ==
-                    cfg.tank_faces.end())
-                    continue;
-                Plane<D> pl;
-                pl.point[d] = Real(side == 0 ? cfg.tank_lo[d] : cfg.tank_hi[d]);
-                pl.normal[d] = side == 0 ? 1.0 : -1.0;
-                planes.push_back(pl);
-            }
-    }
-    for (const WallPlane& wp : cfg.planes) {
-        Plane<D> pl{to_vec<D>(wp.point), to_vec<D>(wp.normal)};
-        pl.normal.normalize();
-        planes.push_back(pl);
-    }
-    return planes;
-}
-
 } // namespace
 
 template <int D>
 std::unique_ptr<StepScheme<D>> Simulation<D>::make_scheme() {
-    // References: the parameters set after this call (time-step, planes, bounds) are read
+    // References: the parameters set after this call (time-step, walls, bounds) are read
     // only by the stages.
-    const CaseParams<D> params{cfg_, kernel_, eos_, momentum_, ts_params_, planes_, bounds_, h_};
+    const CaseParams<D> params{cfg_, kernel_, eos_, momentum_, ts_params_, walls_, bounds_, h_};
     const RankCells<D> cells{grid_, ranges_, topo_};
     const RankLink rank{comm_, ranks_.plan(), between_, receive_delay_};
     switch (cfg_.scheme) {
@@ -113,7 +90,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     const double nu = cfg.viscosity / cfg.rho0 +
                       acoustic_damper_viscosity(cfg.acoustic_damper, h_, cfg.sound_speed);
     ts_params_ = TimeStepParams{h_, nu, cfg.cfl, cfg.viscous_cfl, cfg.force_cfl};
-    planes_ = reflective_planes<D>(cfg);
+    walls_ = reflective_walls<D>(cfg);
 
     const int layers = wall_layers(support, cfg.dx);
     // A fluid particle may sit inside the dummy-wall layers for a moment; it has escaped only
@@ -138,9 +115,9 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         periodic[d] = cfg.periodic[d];
         if (periodic[d])
             continue;
-        const double wall = cfg.walls == WallModel::dummy ? layers * cfg.dx : 0.0;
-        lo[d] = Real(std::min(double(lo[d]), cfg.tank_lo[d] - wall) - support);
-        hi[d] = Real(std::max(double(hi[d]), cfg.tank_hi[d] + wall) + support);
+        const AxisExtent e = wall_extent(cfg, static_cast<std::size_t>(d));
+        lo[d] = Real(e.lo - support);
+        hi[d] = Real(e.hi + support);
     }
     try {
         // With a Verlet skin a cell must hold every pair within support + skin of the sort.

@@ -126,10 +126,10 @@ struct CaseParams {
     const AnyKernel<D>& kernel;
     const Eos& eos;
     const MomentumParams<D>& momentum;
-    const TimeStepParams& time_step;     // CFL, viscous and force limits
-    const std::vector<Plane<D>>& planes; // reflective planes
-    const StateBounds<D>& bounds;        // healthy range of a fluid particle's state
-    double h;                            // smoothing length [m]
+    const TimeStepParams& time_step; // CFL, viscous and force limits
+    const Reflector<D>& walls;       // reflective walls (none under dummy walls)
+    const StateBounds<D>& bounds;    // healthy range of a fluid particle's state
+    double h;                        // smoothing length [m]
 };
 
 // The rank's cells: the grid, each cell's particle range (the state exchange records the halo

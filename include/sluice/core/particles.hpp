@@ -34,13 +34,15 @@ struct Particles {
     std::vector<Vec<D>> v_bc;      // wall particles: velocity seen by the viscous term (Adami)
     std::vector<Vec<D>> shift;     // particle-shifting displacement of this step
 
-    // Leap-frog half-step velocity v^{n-1/2}; read and written only by the particle's own
-    // integration task, so it needs no second buffer.
+    // Leap-frog half-step velocity v^{n-1/2}. The kick advances it in place (only the
+    // particle's own kick writes it, before any neighbour reads it); the drift, whose
+    // continuity rate reads the neighbours' kicked v_half, writes the reflected one to
+    // v_half_next.
     std::vector<Vec<D>> v_half;
 
     // Double buffer written by integration; swapped in at the end of the step so that no
     // stage ever reads a neighbour's half-written state.
-    std::vector<Vec<D>> x_next, v_next;
+    std::vector<Vec<D>> x_next, v_next, v_half_next;
     std::vector<Real> rho_next;
 
     [[nodiscard]] std::size_t size() const { return id.size(); }
@@ -67,6 +69,7 @@ struct Particles {
         f(&Particles::v_half);
         f(&Particles::x_next);
         f(&Particles::v_next);
+        f(&Particles::v_half_next);
         f(&Particles::rho_next);
     }
     static constexpr std::size_t array_count() {
@@ -103,6 +106,7 @@ struct Particles {
         v_half.resize(n, Vec<D>::Zero());
         x_next.resize(n, Vec<D>::Zero());
         v_next.resize(n, Vec<D>::Zero());
+        v_half_next.resize(n, Vec<D>::Zero());
         rho_next.resize(n, 0);
     }
 
@@ -141,6 +145,7 @@ struct Particles {
     void swap_buffers() {
         x.swap(x_next);
         v.swap(v_next);
+        v_half.swap(v_half_next);
         rho.swap(rho_next);
     }
 

@@ -22,10 +22,13 @@ struct ClosestPoint {
 // Where a straight move from a to b first meets the surface.
 struct Crossing {
     Point3 point{};
-    Point3 normal{};
+    Point3 normal{};     // the element's unit normal
+    Point3 anchor{};     // the element's first vertex: a point of its plane, as given
     double fraction = 0; // along a -> b, in [0, 1]
     std::size_t element = 0;
 };
+
+enum class CrossingSense { any, entering_front };
 
 class SurfaceIndex {
 public:
@@ -52,8 +55,11 @@ public:
     [[nodiscard]] double squared_distance(const Point3& x) const;
     // Inside the enclosed volume (points on the surface count as inside). Closed shapes only.
     [[nodiscard]] bool inside(const Point3& x) const;
-    // The first crossing of the segment a -> b with the surface, if any.
-    [[nodiscard]] std::optional<Crossing> first_crossing(const Point3& a, const Point3& b) const;
+    // The first crossing of the segment a -> b with the surface, if any: with any element, or
+    // only with the elements it enters from their front (b - a against the element's normal).
+    [[nodiscard]] std::optional<Crossing>
+    first_crossing(const Point3& a, const Point3& b,
+                   CrossingSense sense = CrossingSense::any) const;
 
 private:
     struct Impl;

@@ -1,11 +1,9 @@
 #pragma once
 // The end of a step for one fluid particle, for both schemes: its new position, velocity and
-// density from the step's rates, kept on the fluid side of the reflective planes. (The
+// density from the step's rates, kept on the fluid side of the reflective walls. (The
 // periodic wrap belongs to the cell grid and is the caller's.)
 #include "sluice/physics/integrator.hpp"
-#include "sluice/physics/walls.hpp"
-
-#include <vector>
+#include "sluice/physics/reflection.hpp"
 
 namespace sluice {
 
@@ -23,14 +21,14 @@ struct DriftedState {
 template <int D>
 DriftedState<D> leapfrog_drift(const Vec<D>& x, Vec<D>& v_half, const Vec<D>& a, Real rho,
                                const Real* drho, const Vec<D>* shift, Real dt,
-                               const std::vector<Plane<D>>& planes, Real restitution) {
+                               const Reflector<D>& walls) {
     DriftedState<D> s{drift<D>(x, v_half, dt), velocity_estimate<D>(v_half, a, dt), rho};
     if (shift != nullptr)
         s.x += *shift;
     if (drho != nullptr)
         s.rho = rho + dt * *drho;
-    if (!planes.empty())
-        reflect(planes, restitution, s.x, v_half, s.v);
+    if (!walls.empty())
+        walls.apply(x, s.x, v_half, s.v);
     return s;
 }
 
@@ -38,14 +36,14 @@ DriftedState<D> leapfrog_drift(const Vec<D>& x, Vec<D>& v_half, const Vec<D>& a,
 // velocity v, plus the shifting displacement when `shift` is given, which a reflection turns;
 // the density is not advanced (the scheme keeps rho0).
 template <int D>
-Vec<D> projection_drift(const Vec<D>& x, Vec<D>& v, Real dt, const std::vector<Plane<D>>& planes,
-                        Real restitution, const Vec<D>* shift = nullptr) {
+Vec<D> projection_drift(const Vec<D>& x, Vec<D>& v, Real dt, const Reflector<D>& walls,
+                        const Vec<D>* shift = nullptr) {
     Vec<D> moved = x + dt * v;
     if (shift != nullptr)
         moved += *shift;
-    if (!planes.empty()) {
+    if (!walls.empty()) {
         Vec<D> unused = v;
-        reflect(planes, restitution, moved, unused, v);
+        walls.apply(x, moved, unused, v);
     }
     return moved;
 }

@@ -1,52 +1,25 @@
 #pragma once
-// Wall models.
-//  (a) Reflective planes (seed 000, its Step 3 and 5-9): a particle that crossed a plane is
-//      mirrored back and its normal velocity reversed (times a restitution coefficient).
-//  (b) Fixed dummy particles (Adami, Hu & Adams 2012, eqs. 22-28): each wall particle takes
-//      the pressure extrapolated from the fluid around it,
-//        p_w = [sum_f p_f W_wf + (g - a_w) . sum_f rho_f (x_w - x_f) W_wf] / sum_f W_wf,
-//      the density that pressure gives through the EOS, and for no-slip the velocity
-//        v_bc = 2 v_w - sum_f v_f W_wf / sum_f W_wf.
-//      A wall particle stands for a fixed volume V_w = dx^D of wall, like a fluid particle for
-//      its cell, so its mass is m_w = rho_w V_w. In Adami's volume-based momentum equation
-//      the wall volume is geometric and rho_w only enters the pressure; in the mass-based
-//      Monaghan form used here, the same requires m_w = rho_w V_w. A fixed m_w = rho0 V_w
-//      would give the wall particles next to pressurised fluid a volume m_w/rho_w smaller
-//      than their spacing, so the kernel sums across the wall are incomplete
-//      (sum_j V_j grad W_ij != 0 in a uniform arrangement): at the bottom of a still 0.4 m
-//      tank at c0 = 20 m/s the first fluid row is then short of ~3 m/s^2 of support, and
-//      the floor pressure creeps up by ~2 % as the column settles onto the weak wall.
+// Wall models. (Reflective walls, the other model, are physics/reflection.hpp.)
+// Fixed dummy particles (Adami, Hu & Adams 2012, eqs. 22-28): each wall particle takes
+//   the pressure extrapolated from the fluid around it,
+//     p_w = [sum_f p_f W_wf + (g - a_w) . sum_f rho_f (x_w - x_f) W_wf] / sum_f W_wf,
+//   the density that pressure gives through the EOS, and for no-slip the velocity
+//     v_bc = 2 v_w - sum_f v_f W_wf / sum_f W_wf.
+//   A wall particle stands for a fixed volume V_w = dx^D of wall, like a fluid particle for
+//   its cell, so its mass is m_w = rho_w V_w. In Adami's volume-based momentum equation
+//   the wall volume is geometric and rho_w only enters the pressure; in the mass-based
+//   Monaghan form used here, the same requires m_w = rho_w V_w. A fixed m_w = rho0 V_w
+//   would give the wall particles next to pressurised fluid a volume m_w/rho_w smaller
+//   than their spacing, so the kernel sums across the wall are incomplete
+//   (sum_j V_j grad W_ij != 0 in a uniform arrangement): at the bottom of a still 0.4 m
+//   tank at c0 = 20 m/s the first fluid row is then short of ~3 m/s^2 of support, and
+//   the floor pressure creeps up by ~2 % as the column settles onto the weak wall.
 #include "sluice/core/neighbourhood.hpp"
 #include "sluice/core/particles.hpp"
 #include "sluice/physics/eos.hpp"
 #include "sluice/physics/kernels.hpp"
 
 namespace sluice {
-
-template <int D>
-struct Plane {
-    Vec<D> point = Vec<D>::Zero();
-    Vec<D> normal = Vec<D>::Zero(); // unit, pointing into the fluid
-};
-
-// Keeps a particle on the fluid side of every plane. v_half and v are the two velocities the
-// leap-frog carries; both lose their inward normal component.
-template <int D>
-void reflect(const std::vector<Plane<D>>& planes, Real restitution, Vec<D>& x, Vec<D>& v_half,
-             Vec<D>& v) {
-    for (const Plane<D>& pl : planes) {
-        const Real s = (x - pl.point).dot(pl.normal);
-        if (s >= 0)
-            continue;
-        x -= 2 * s * pl.normal;
-        const Real vn_half = v_half.dot(pl.normal);
-        if (vn_half < 0)
-            v_half -= (1 + restitution) * vn_half * pl.normal;
-        const Real vn = v.dot(pl.normal);
-        if (vn < 0)
-            v -= (1 + restitution) * vn * pl.normal;
-    }
-}
 
 // Adami's extrapolation for one wall particle w: the kernel-weighted sums over the fluid
 // particles f around it (dx = x_w - x_f), and the pressure and boundary velocity they give.

@@ -12,6 +12,7 @@
 #include "sluice/physics/eos.hpp"
 #include "sluice/physics/kernels.hpp"
 #include "sluice/physics/momentum.hpp"
+#include "sluice/physics/reflection.hpp"
 #include "sluice/physics/riemann.hpp"
 #include "sluice/physics/timestep.hpp"
 #include "sluice/physics/wall_loads.hpp"
@@ -240,7 +241,7 @@ private:
     Eos eos_;
     MomentumParams<D> momentum_;
     TimeStepParams ts_params_;
-    std::vector<Plane<D>> planes_;
+    Reflector<D> walls_; // reflective walls
     Vec<D> domain_lo_, domain_hi_;
     StateBounds<D> bounds_; // healthy range of a fluid particle's state
     double h_ = 0;

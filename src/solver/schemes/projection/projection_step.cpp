@@ -406,6 +406,7 @@ void ProjectionScheme<D>::correct_stage(int group) {
         if (P_.kind[i] != Kind::fluid || d.failed) {
             P_.x_next[i] = P_.x[i];
             P_.v_next[i] = P_.v[i];
+            P_.v_half_next[i] = P_.v_half[i];
             P_.rho_next[i] = P_.rho[i];
             continue;
         }
@@ -439,12 +440,11 @@ void ProjectionScheme<D>::correct_stage(int group) {
         Vec<D> v = collide_with_walls(
             i, list, list.offset[k], list.offset[k + 1],
             corrected_velocity<D>(d.u_star[i], grad, rho0, Real(clock_.dt)), G.contacts);
-        Vec<D> x =
-            projection_drift<D>(P_.x[i], v, Real(clock_.dt), case_.planes,
-                                Real(case_.cfg.restitution), shifting ? &P_.shift[i] : nullptr);
+        Vec<D> x = projection_drift<D>(P_.x[i], v, Real(clock_.dt), case_.walls,
+                                       shifting ? &P_.shift[i] : nullptr);
         cells_.grid.wrap(x);
         P_.a[i] = (v - P_.v[i]) / clock_.dt;
-        P_.v_half[i] = v;
+        P_.v_half_next[i] = v;
         P_.x_next[i] = x;
         P_.v_next[i] = v;
         P_.rho_next[i] = P_.rho[i];

@@ -267,6 +267,8 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                 continuity_rate(nb, kernel, diffusion_, c, P_, std::span<const Vec<D>>(P_.v_half),
                                 std::span<Real>(P_.drho));
             for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+                // v_half stays as kicked: other groups' continuity rates read it in this stage.
+                P_.v_half_next[i] = P_.v_half[i];
                 if (P_.kind[i] != Kind::fluid) {
                     P_.x_next[i] = P_.x[i];
                     P_.v_next[i] = P_.v[i];
@@ -274,9 +276,9 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                     continue;
                 }
                 auto [x, v, rho] = leapfrog_drift<D>(
-                    P_.x[i], P_.v_half[i], P_.a[i], P_.rho[i], continuity_ ? &P_.drho[i] : nullptr,
-                    case_.cfg.shifting > 0 ? &P_.shift[i] : nullptr, dt, case_.planes,
-                    Real(case_.cfg.restitution));
+                    P_.x[i], P_.v_half_next[i], P_.a[i], P_.rho[i],
+                    continuity_ ? &P_.drho[i] : nullptr,
+                    case_.cfg.shifting > 0 ? &P_.shift[i] : nullptr, dt, case_.walls);
                 cells_.grid.wrap(x);
                 P_.x_next[i] = x;
                 P_.v_next[i] = v;
