@@ -3,6 +3,8 @@
 // a line).
 #include "sluice/geometry/surface_geometry.hpp"
 
+#include "point_math.hpp"
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -25,6 +27,10 @@
 #include <string>
 
 namespace sluice {
+
+using detail::cross;
+using detail::minus;
+using detail::norm;
 
 namespace {
 
@@ -62,16 +68,6 @@ void check_file(const std::string& path, const GeometryLimits& limits) {
 
 bool finite(const Point3& p) {
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-}
-
-Point3 cross(const Point3& a, const Point3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Point3 minus(const Point3& a, const Point3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double norm(const Point3& a) {
-    return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
 }
 
 } // namespace

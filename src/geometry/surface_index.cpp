@@ -3,6 +3,8 @@
 // (3-D) or the bounded side of each closed loop (2-D, parity over loops, so holes work).
 #include "sluice/geometry/surface_index.hpp"
 
+#include "point_math.hpp"
+
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -14,12 +16,18 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <boost/variant/get.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
 namespace sluice {
+
+using detail::dot;
+using detail::minus;
+using detail::norm;
 
 namespace {
 
@@ -39,13 +47,6 @@ P3 point(const Point3& p) {
 }
 Point3 triple(const P3& p) {
     return {p.x(), p.y(), p.z()};
-}
-
-double dot(const Point3& a, const Point3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Point3 minus(const Point3& a, const Point3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
 }
 
 // Directed edges (3-D) or segments (2-D) each matched by exactly one reverse, and no directed
@@ -118,6 +119,67 @@ std::vector<std::vector<K::Point_2>> loops_of(const SurfaceGeometry& g) {
     return loops;
 }
 
+// Pseudo-normals (Baerentzen & Aanaes 2005): the sign of (x - p) . n tells the side of x only
+// where p lies inside an element; where the closest point p is an edge or a vertex, n must be
+// that feature's pseudo-normal, the sum of its elements' normals (angle-weighted at a 3-D
+// vertex). With the element's own normal, a point behind a convex corner can read as in front
+// of the face whose end it is nearest. Per vertex here; per edge on demand (two normals).
+std::vector<Point3> vertex_pseudo_normals(const SurfaceGeometry& g,
+                                          const std::vector<Point3>& normals) {
+    std::vector<Point3> n(g.vertices.size(), Point3{});
+    const auto add = [&](std::uint32_t v, const Point3& m, double w) {
+        for (std::size_t a = 0; a < 3; ++a)
+            n[v][a] += w * m[a];
+    };
+    if (g.dimension == 3) {
+        for (std::size_t e = 0; e < g.triangles.size(); ++e) {
+            const auto& t = g.triangles[e];
+            for (std::size_t k = 0; k < 3; ++k) {
+                const Point3 u = minus(g.vertices[t[(k + 1) % 3]], g.vertices[t[k]]);
+                const Point3 w = minus(g.vertices[t[(k + 2) % 3]], g.vertices[t[k]]);
+                const double nu = norm(u), nw = norm(w);
+                const double angle =
+                    nu > 0 && nw > 0 ? std::acos(std::clamp(dot(u, w) / (nu * nw), -1.0, 1.0)) : 0;
+                add(t[k], normals[e], angle);
+            }
+        }
+    } else {
+        for (std::size_t e = 0; e < g.segments.size(); ++e) {
+            add(g.segments[e][0], normals[e], 1);
+            add(g.segments[e][1], normals[e], 1);
+        }
+    }
+    return n;
+}
+
+// Each triangle's neighbour across its edge k (from vertex k to k + 1), or none.
+constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
+std::vector<std::array<std::uint32_t, 3>> edge_neighbours(const SurfaceGeometry& g) {
+    std::vector<std::array<std::uint32_t, 3>> nb(g.triangles.size(),
+                                                 {kNoTriangle, kNoTriangle, kNoTriangle});
+    // (low vertex, high vertex, triangle, edge) sorted: the two uses of an edge side by side.
+    std::vector<std::array<std::uint32_t, 4>> uses;
+    uses.reserve(3 * g.triangles.size());
+    for (std::size_t e = 0; e < g.triangles.size(); ++e)
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const std::uint32_t a = g.triangles[e][k], b = g.triangles[e][(k + 1) % 3];
+            uses.push_back({std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(e), k});
+        }
+    std::sort(uses.begin(), uses.end());
+    for (std::size_t i = 0; i + 1 < uses.size(); ++i) {
+        const auto &u = uses[i], &w = uses[i + 1];
+        if (u[0] != w[0] || u[1] != w[1])
+            continue;
+        // Exactly two uses: a manifold edge (a third use leaves the edge to its own normals).
+        if ((i + 2 < uses.size() && uses[i + 2][0] == u[0] && uses[i + 2][1] == u[1]) ||
+            (i > 0 && uses[i - 1][0] == u[0] && uses[i - 1][1] == u[1]))
+            continue;
+        nb[u[2]][u[3]] = w[2];
+        nb[w[2]][w[3]] = u[2];
+    }
+    return nb;
+}
+
 } // namespace
 
 struct SurfaceIndex::Impl {
@@ -130,9 +192,48 @@ struct SurfaceIndex::Impl {
     Segments segments;
     std::unique_ptr<TriTree> tri_tree;
     std::unique_ptr<SegTree> seg_tree;
-    Mesh mesh;                                  // closed 3-D shapes: for the inside test
-    std::unique_ptr<MeshSide> side;             // ...
-    std::vector<std::vector<K::Point_2>> loops; // closed 2-D shapes
+    Mesh mesh;                                            // closed 3-D shapes: for the inside test
+    std::unique_ptr<MeshSide> side;                       // ...
+    std::vector<std::vector<K::Point_2>> loops;           // closed 2-D shapes
+    std::vector<Point3> vertex_normals;                   // pseudo-normals (unnormalised)
+    std::vector<std::array<std::uint32_t, 3>> neighbours; // 3-D: across each edge
+
+    // The pseudo-normal of the feature of element e that p (its closest point to some x)
+    // lies on: the element's normal inside it, an edge's or a vertex's at its boundary.
+    Point3 feature_normal(std::size_t e, const Point3& p) const {
+        const double tol2 = 1e-18 * std::max(1.0, dot(p, p));
+        if (g.dimension == 2) {
+            for (std::uint32_t v : g.segments[e]) {
+                const Point3 r = minus(p, g.vertices[v]);
+                if (dot(r, r) <= tol2)
+                    return vertex_normals[v];
+            }
+            return normals[e];
+        }
+        const auto& t = g.triangles[e];
+        for (std::uint32_t v : t) {
+            const Point3 r = minus(p, g.vertices[v]);
+            if (dot(r, r) <= tol2)
+                return vertex_normals[v];
+        }
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Point3& a = g.vertices[t[k]];
+            const Point3 ab = minus(g.vertices[t[(k + 1) % 3]], a), ap = minus(p, a);
+            const double len2 = dot(ab, ab);
+            if (len2 == 0)
+                continue;
+            const double f = dot(ap, ab) / len2;
+            const Point3 off{ap[0] - f * ab[0], ap[1] - f * ab[1], ap[2] - f * ab[2]};
+            if (dot(off, off) > tol2)
+                continue;
+            Point3 n = normals[e];
+            if (const std::uint32_t o = neighbours[e][k]; o != kNoTriangle)
+                for (std::size_t a2 = 0; a2 < 3; ++a2)
+                    n[a2] += normals[o][a2];
+            return n;
+        }
+        return normals[e];
+    }
 
     std::size_t element_of(Triangles::const_iterator it) const {
         return static_cast<std::size_t>(it - triangles.begin());
@@ -188,6 +289,9 @@ SurfaceIndex::SurfaceIndex(SurfaceGeometry geometry) : impl_(std::make_unique<Im
         m.seg_tree->build();
         m.seg_tree->accelerate_distance_queries();
     }
+    m.vertex_normals = vertex_pseudo_normals(g, m.normals);
+    if (g.dimension == 3)
+        m.neighbours = edge_neighbours(g);
     m.closed = is_closed(g);
     if (!m.closed)
         return;
@@ -256,7 +360,11 @@ ClosestPoint SurfaceIndex::closest(const Point3& x) const {
     c.normal = m.normals[c.element];
     const Point3 r = minus(x, c.point);
     c.distance = std::sqrt(dot(r, r));
-    c.side = c.distance > 0 ? dot(r, c.normal) / c.distance : 0;
+    // The side by the pseudo-normal of the feature the closest point lies on; its sign only
+    // (an edge's or a vertex's is not unit): -1 or +1 off an element's interior.
+    const Point3 n = m.feature_normal(c.element, c.point);
+    const double nn = std::sqrt(dot(n, n));
+    c.side = c.distance > 0 && nn > 0 ? dot(r, n) / (c.distance * nn) : 0;
     return c;
 }
 

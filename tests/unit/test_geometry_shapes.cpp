@@ -191,6 +191,40 @@ TEST_CASE("an open 2-D bed lays its walls below it only") {
     CHECK(double(count) == doctest::Approx(2 * 1.039 / dx).epsilon(0.05));
 }
 
+TEST_CASE("behind a corner the side is the corner's, not the nearest face's") {
+    // A container: right wall down, a bed rising to the right, left wall up (normals inwards).
+    // Below its lower-left corner (0, 0.05) a point is nearer the left wall's end than the
+    // bed, and in front of the left wall's plane: only the corner's pseudo-normal (the sum of
+    // the two faces' normals) puts it behind.
+    SurfaceGeometry g;
+    g.dimension = 2;
+    g.vertices = {{0.4, 0.6, 0}, {0.4, 0.12, 0}, {0, 0.05, 0}, {0, 0.6, 0}};
+    g.segments = {{0, 1}, {1, 2}, {2, 3}};
+    const SurfaceIndex s(g);
+    const ClosestPoint below = s.closest({0.005, 0.005, 0});
+    CHECK(below.point[0] == doctest::Approx(0));
+    CHECK(below.point[1] == doctest::Approx(0.05));
+    CHECK(below.side < 0);
+    CHECK(s.closest({0.005, 0.06, 0}).side > 0); // inside the container
+    CHECK(s.closest({-0.005, 0.3, 0}).side < 0); // behind the left wall
+
+    // 3-D: a unit cube, outward. Outside beyond an edge and a corner: in front; inside near
+    // them: behind (the nearest feature is a face there).
+    const SurfaceIndex cube(box_shape({0, 0, 0}, {1, 1, 1}));
+    CHECK(cube.closest({1.1, 1.1, 0.5}).side > 0.99); // edge: (1, 1, 0) / sqrt 2 pseudo-normal
+    CHECK(cube.closest({1.1, 1.1, 1.1}).side > 0.99); // corner
+    CHECK(cube.closest({0.95, 0.97, 0.5}).side < -0.99);
+    // Open: a single square (two triangles, normal +z). Beyond its edge, level with it, the
+    // side is 0 (the edge's pseudo-normal is the face's); above it, positive.
+    SurfaceGeometry sq;
+    sq.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    sq.triangles = {{0, 1, 2}, {0, 2, 3}};
+    const SurfaceIndex plate(sq);
+    CHECK(plate.closest({1.5, 0.5, 0}).side == doctest::Approx(0).epsilon(1e-12));
+    CHECK(plate.closest({1.5, 0.5, 0.5}).side > 0);
+    CHECK(plate.closest({0.5, 0.5, -0.1}).side < -0.99);
+}
+
 TEST_CASE("the section of a box by a plane is its rectangle, oriented outwards") {
     const SurfaceGeometry cut = section_by_plane(box_shape({0, 0, -1}, {2, 1, 1}), 0.25);
     const SurfaceIndex s(cut);

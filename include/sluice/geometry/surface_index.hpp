@@ -15,7 +15,9 @@ struct ClosestPoint {
     Point3 point{};
     Point3 normal{};     // the closest element's unit normal
     double distance = 0; // |x - point|
-    double side = 0;     // (x - point) . normal / distance: +1 straight in front, -1 behind
+    // (x - point) . n / distance, n the normal of the closest element, or the pseudo-normal of
+    // the edge or vertex the closest point lies on: +1 straight in front, -1 behind.
+    double side = 0;
     std::size_t element = 0;
 };
 
