@@ -73,6 +73,18 @@ BuiltGeometry built_geometry(const CaseConfig& cfg, int layers) {
         bb.requested_volume = requested;
         g.blocks.push_back(bb);
     }
+    // Degenerate as the case reader counts them (case_meshes.cpp).
+    const double tiny = dim == 3 ? 1e-12 * dx * dx : 1e-6 * dx;
+    for (std::size_t i = 0; i < cfg.meshes.size(); ++i) {
+        BuiltMesh bm;
+        bm.shape = report_shape(*cfg.meshes[i].shape, tiny);
+        if (cfg.walls == WallModel::dummy) {
+            bm.walls = mesh_wall_census(cfg, i, layers);
+            bm.coverage =
+                static_cast<double>(bm.walls.first_layer) * std::pow(dx, dim - 1) / bm.shape.size;
+        }
+        g.meshes.push_back(bm);
+    }
     return g;
 }
 

@@ -154,6 +154,38 @@ std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& in
                                        b.hi[a], wall_layers(info.support, cfg.dx), cfg.dx)});
             break;
         }
+    // Meshes: a solid thinner than the kernel's reach lets a fluid particle at one face see
+    // the fluid at the other through it; a built surface off the mesh, or with too few sites
+    // in its innermost layer (curvature on the scale of dx, left-out sites), is a wall other
+    // than the one drawn.
+    const int layers = wall_layers(info.support, cfg.dx);
+    for (std::size_t i = 0; i < built.meshes.size(); ++i) {
+        const BuiltMesh& m = built.meshes[i];
+        const std::string key = fmt::format("walls.meshes[{}].file", i);
+        const std::string& file = cfg.meshes[i].file;
+        if (cfg.meshes[i].role == MeshRole::solid && m.shape.thinnest < layers * cfg.dx)
+            out.push_back(
+                {key, fmt::format("\"{}\" is {:.3g} m ({:.2g} dx) thick at its thinnest, less "
+                                  "than its {} wall layers ({:.3g} m, the kernel's reach): fluid "
+                                  "on one side sees the fluid on the other through it; "
+                                  "dx <= {:.3g} m gives the layers room",
+                                  file, m.shape.thinnest, m.shape.thinnest / cfg.dx, layers,
+                                  layers * cfg.dx, m.shape.thinnest / layers)});
+        if (cfg.walls != WallModel::dummy)
+            continue;
+        if (m.walls.surface_deviation > tol)
+            out.push_back(
+                {key, fmt::format("the wall surface of \"{}\" as built lies up to {:.2g} dx "
+                                  "from the mesh (more than 0.1 dx)",
+                                  file, m.walls.surface_deviation / cfg.dx)});
+        if (m.coverage < min_mesh_coverage)
+            out.push_back(
+                {key, fmt::format("the innermost wall layer of \"{}\" holds {:.2f} sites per "
+                                  "dx^{} of its surface (a flat face: 1): its surface curves "
+                                  "on the scale of dx or has features below it, so the wall "
+                                  "the fluid sees has gaps; a smaller dx follows it",
+                                  file, m.coverage, dim - 1)});
+    }
     for (std::size_t i = 0; i < built.blocks.size(); ++i)
         for (std::size_t a = 0; a < dim; ++a) {
             const BuiltBlock& b = built.blocks[i];

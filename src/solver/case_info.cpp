@@ -92,6 +92,32 @@ std::vector<std::string> geometry_lines(const CaseConfig& cfg, int layers) {
                                   vec_str(cfg.blocks[i].hi, dim), sites, b.particles, b.volume, dim,
                                   b.requested_volume, 100 * (b.volume / b.requested_volume - 1)));
     }
+    for (std::size_t i = 0; i < g.meshes.size(); ++i) {
+        const BuiltMesh& m = g.meshes[i];
+        const ShapeReport& r = m.shape;
+        const bool tri = dim == 3;
+        std::string line = fmt::format(
+            "walls.meshes[{}] \"{}\" ({}): {} {}, {}, {} to {} m, {} {:.6g} m{}", i,
+            cfg.meshes[i].file, cfg.meshes[i].role == MeshRole::solid ? "solid" : "surface",
+            r.elements, tri ? "triangles" : "segments",
+            r.closed ? (r.outward ? "closed, normals out" : "closed, normals in") : "open",
+            vec_str(r.lo, dim), vec_str(r.hi, dim), tri ? "area" : "length", r.size,
+            tri ? "^2" : "");
+        if (r.closed)
+            line += fmt::format(", encloses {:.6g} m^{}, thinnest {:.4g} m ({:.3g} dx)", r.volume,
+                                dim, r.thinnest, r.thinnest / cfg.dx);
+        if (cfg.walls == WallModel::dummy)
+            line += fmt::format("; {} wall particles ({:.6g} m^{}) in {} layers, {} in the "
+                                "innermost ({:.3f} per dx^{} of surface), its surface within "
+                                "{:.2g} dx of the mesh",
+                                m.walls.particles,
+                                static_cast<double>(m.walls.particles) * std::pow(cfg.dx, dim), dim,
+                                layers, m.walls.first_layer, m.coverage, dim - 1,
+                                m.walls.surface_deviation / cfg.dx);
+        else
+            line += "; reflective faces";
+        out.push_back(line);
+    }
     return out;
 }
 

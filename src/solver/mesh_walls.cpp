@@ -3,6 +3,7 @@
 
 #include "sluice/geometry/shape_particles.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sluice {
@@ -43,6 +44,19 @@ std::vector<std::size_t> count_mesh_wall_particles(const CaseConfig& cfg, int la
         counts.push_back(n);
     }
     return counts;
+}
+
+MeshWallCensus mesh_wall_census(const CaseConfig& cfg, std::size_t mesh, int layers) {
+    const WallMesh& m = cfg.meshes.at(mesh);
+    MeshWallCensus c;
+    const double dx = cfg.dx;
+    visit_wall_sites(*m.shape, role_of(m), lattice_of(cfg, m), layers, [&](const WallSite& w) {
+        ++c.particles;
+        c.first_layer += w.layer == 0 ? 1 : 0;
+        const double d = std::sqrt(m.shape->squared_distance(w.x));
+        c.surface_deviation = std::max(c.surface_deviation, std::abs(d - (w.layer + 0.5) * dx));
+    });
+    return c;
 }
 
 bool fluid_site_taken_by_mesh(const CaseConfig& cfg, const Triple& x) {

@@ -1,7 +1,9 @@
 #pragma once
 // The geometry a case's particles take when built (solver/initial_state.hpp), from the
 // configuration alone, without making the particles.
+#include "sluice/geometry/shape_report.hpp"
 #include "sluice/io/case_config.hpp"
+#include "sluice/solver/mesh_walls.hpp"
 
 #include <array>
 #include <cstddef>
@@ -31,10 +33,19 @@ struct BuiltBlock {
     std::size_t particles = 0;
     double volume = 0, requested_volume = 0; // particles dx^D, and the shape's volume [m^D]
 };
+struct BuiltMesh {
+    ShapeReport shape; // the mesh as placed
+    // Dummy walls: the layers laid (reflective walls lay none).
+    MeshWallCensus walls;
+    // Innermost-layer sites x dx^(D-1) over the surface's area: about 1 for a flat face;
+    // below 1 where the surface curves on the scale of dx or sites were left out.
+    double coverage = 0;
+};
 struct BuiltGeometry {
     std::vector<BuiltFace> faces; // walled tank faces (dummy walls only)
     std::vector<BuiltBox> boxes;
     std::vector<BuiltBlock> blocks;
+    std::vector<BuiltMesh> meshes;
 };
 BuiltGeometry built_geometry(const CaseConfig& cfg, int layers);
 

@@ -22,6 +22,7 @@ struct CaseWarning {
 
 // Thresholds of the warnings (documented in docs/CASE_REFERENCE.md, "sluice info").
 inline constexpr double min_particles_across = 20; // across the smallest feature
+inline constexpr double min_mesh_coverage = 0.8;   // innermost mesh wall sites per dx^(D-1)
 inline constexpr double min_useful_dt = 1e-7;      // [s]
 inline constexpr double min_mach_ratio = 10;       // c0 >= 10 sqrt(g H)
 // c0 >= 20 sqrt(g H) where the case measures loads (pressure or force probes): at

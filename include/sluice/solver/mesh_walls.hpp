@@ -17,6 +17,16 @@ ParticleId visit_mesh_wall_particles(const CaseConfig& cfg, int layers, Particle
 // Wall particles per mesh, in case order.
 std::vector<std::size_t> count_mesh_wall_particles(const CaseConfig& cfg, int layers);
 
+// A mesh's wall layers as laid, for `sluice info` and the case warnings.
+struct MeshWallCensus {
+    std::size_t particles = 0;   // every layer
+    std::size_t first_layer = 0; // the innermost layer's (dx/2 behind the surface)
+    // The largest |distance to the mesh - (layer + 1/2) dx| of any site [m]: how far the wall
+    // surface the layers stand for (dx/2 beyond the innermost) lies from the mesh.
+    double surface_deviation = 0;
+};
+MeshWallCensus mesh_wall_census(const CaseConfig& cfg, std::size_t mesh, int layers);
+
 // A fluid lattice site x (before settling and jitter) that a mesh takes: inside a solid,
 // behind a surface, or closer than dx/2 to either (where the innermost wall layer is dx/2
 // behind the surface, a fluid particle keeps at least dx from it). A block that reaches into a

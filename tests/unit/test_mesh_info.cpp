@@ -1,0 +1,121 @@
+// `sluice info` and `check` on [[walls.meshes]]: each mesh's line (elements, closed or open,
+// normals, bounding box, area, enclosed volume, thinnest part, the wall particles laid and how
+// closely their surface follows the mesh), and the warnings naming walls.meshes[i].file for a
+// solid thinner than its wall layers and for a surface curved on the scale of dx.
+#include "shape_files.hpp"
+#include "sluice/io/case_reader.hpp"
+#include "sluice/solver/case_check.hpp"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+
+using namespace sluice;
+
+namespace {
+
+// A 0.6 m cube tank with dummy walls, dx = 0.01 m, Wendland C2 with h = 1.5 dx: 3 wall layers.
+std::string case_with_mesh(const std::string& file) {
+    return R"(
+[case]
+dimension = 3
+[domain]
+lo = [0, 0, 0]
+hi = [0.6, 0.6, 0.6]
+[fluid]
+rho0 = 1000
+viscosity = 1e-3
+sound_speed = 40
+[particles]
+dx = 0.01
+[[blocks]]
+lo = [0, 0, 0]
+hi = [0.2, 0.6, 0.2]
+[numerics]
+kernel = "wendland_c2"
+h_over_dx = 1.5
+[walls]
+model = "dummy"
+tank_lo = [0, 0, 0]
+tank_hi = [0.6, 0.6, 0.6]
+[[walls.meshes]]
+file = ")" +
+           file + R"("
+role = "solid"
+[time]
+end_time = 1
+)";
+}
+
+struct Checked {
+    CaseInfo info;
+    std::vector<CaseWarning> warnings;
+};
+
+Checked check_shape(const SurfaceGeometry& g, const std::string& name) {
+    const std::string path = test::temp_path(name);
+    test::write_ascii_stl(g, path);
+    const CaseConfig cfg = read_case_text(case_with_mesh(path), "mesh.toml", {});
+    Checked c{describe_case(cfg), {}};
+    c.warnings = case_warnings(cfg, c.info);
+    std::filesystem::remove(path);
+    return c;
+}
+
+std::string mesh_line(const CaseInfo& info) {
+    for (const auto& l : info.geometry)
+        if (l.rfind("walls.meshes[0]", 0) == 0)
+            return l;
+    return {};
+}
+
+const CaseWarning* mesh_warning(const std::vector<CaseWarning>& w, const std::string& part) {
+    for (const auto& x : w)
+        if (x.key == "walls.meshes[0].file" && x.message.find(part) != std::string::npos)
+            return &x;
+    return nullptr;
+}
+
+bool contains(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
+
+} // namespace
+
+TEST_CASE("a box obstacle as a mesh: its line in info, no warning") {
+    const Checked c = check_shape(test::box_shape({0.3, 0.2, 0}, {0.4, 0.4, 0.3}), "box.stl");
+    const std::string line = mesh_line(c.info);
+    INFO(line);
+    CHECK(contains(line, "(solid): 12 triangles, closed, normals out"));
+    CHECK(contains(line, "[0.3, 0.2, 0] to [0.4, 0.4, 0.3] m"));
+    CHECK(contains(line, "area 0.22 m^2"));      // 2 (0.02 + 0.03 + 0.06)
+    CHECK(contains(line, "encloses 0.006 m^3")); // 0.1 x 0.2 x 0.3
+    CHECK(contains(line, "thinnest 0.1 m (10 dx)"));
+    CHECK(contains(line, "in 3 layers"));
+    CHECK(mesh_warning(c.warnings, "") == nullptr);
+}
+
+TEST_CASE("a solid thinner than its wall layers is flagged with its thickness") {
+    // 0.02 m thick: 2 dx, below the 3 layers (0.03 m) a fluid particle's kernel reaches.
+    const Checked c = check_shape(test::box_shape({0.3, 0.1, 0}, {0.32, 0.5, 0.3}), "plate.stl");
+    const CaseWarning* w = mesh_warning(c.warnings, "thick at its thinnest");
+    REQUIRE(w != nullptr);
+    CHECK(contains(w->message, "0.02 m (2 dx)"));
+    CHECK(contains(w->message, "3 wall layers (0.03 m"));
+    CHECK(contains(w->message, "dx <= 0.00667 m"));
+}
+
+TEST_CASE("a sphere of a few dx is flagged: its innermost layer has gaps") {
+    // Radius 0.025 m = 2.5 dx: the innermost layer, dx/2 inside, has about (2/2.5)^2 = 0.64 of
+    // the sites a flat face of that area would have.
+    const Checked small = check_shape(test::sphere_shape({0.3, 0.3, 0.3}, 0.025, 24, 48), "s.stl");
+    const CaseWarning* w = mesh_warning(small.warnings, "sites per dx^2");
+    REQUIRE(w != nullptr);
+    // Radius 0.15 m = 15 dx: (14.5/15)^2 = 0.93, no warning.
+    const Checked large = check_shape(test::sphere_shape({0.3, 0.3, 0.3}, 0.15, 24, 48), "l.stl");
+    CHECK(mesh_warning(large.warnings, "sites per dx^2") == nullptr);
+    const std::string line = mesh_line(large.info);
+    INFO(line);
+    CHECK(contains(line, "its surface within"));
+}
