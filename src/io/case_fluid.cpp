@@ -3,6 +3,7 @@
 #include "case_fluid.hpp"
 
 #include "case_limits.hpp"
+#include "case_meshes.hpp"
 
 #include <fmt/format.h>
 
@@ -28,8 +29,23 @@ const std::vector<std::pair<std::string, VelocityProfile>> kProfiles = {
     {"strain", VelocityProfile::strain}};
 const std::vector<std::pair<std::string, ParticleExit>> kParticleExits = {
     {"stop", ParticleExit::stop}, {"remove", ParticleExit::remove}};
-const std::vector<std::pair<std::string, BlockShape>> kShapes = {{"box", BlockShape::box},
-                                                                 {"ellipse", BlockShape::ellipse}};
+const std::vector<std::pair<std::string, BlockShape>> kShapes = {
+    {"box", BlockShape::box}, {"ellipse", BlockShape::ellipse}, {"mesh", BlockShape::mesh}};
+
+// shape = "mesh": a closed shape's file (the [[walls.meshes]] keys but role); the block is the
+// part of it inside lo/hi (each optional), its lattice from that box's lower corner.
+void read_block_mesh(const Section& s, const CaseConfig& c, FluidBlock& b) {
+    const auto lo = s.triple("lo"), hi = s.triple("hi");
+    auto m = std::make_shared<WallMesh>();
+    const ShapeReport r = read_shape_file(s, c, *m);
+    require_closed_outward(s, c, *m, r, " to fill", "");
+    // lo and hi, where given, cut the shape: a container's volume filled to a level.
+    for (std::size_t a = 0; a < 3; ++a) {
+        b.lo[a] = lo ? std::max(r.lo[a], (*lo)[a]) : r.lo[a];
+        b.hi[a] = hi ? std::min(r.hi[a], (*hi)[a]) : r.hi[a];
+    }
+    b.mesh = std::move(m);
+}
 
 // Keys of the rotating and strain profiles: each needs its rate, only in 2-D, and the strain
 // profile's pressure is known for an ellipse only. An ellipse has no flat top, so the
@@ -53,6 +69,9 @@ void read_block_profile(const Section& s, const CaseConfig& c, FluidBlock& b) {
     b.angular_velocity = rate("angular_velocity", VelocityProfile::rotating, "rotating",
                               "angular velocity [rad/s], counter-clockwise positive");
     b.strain_rate = rate("strain_rate", VelocityProfile::strain, "strain", "strain rate A0 [1/s]");
+    if (b.shape == BlockShape::mesh)
+        s.require(b.profile == VelocityProfile::uniform, "profile",
+                  "a mesh block starts with a uniform velocity (profile = \"uniform\")");
     if (b.profile == VelocityProfile::strain)
         s.require(b.shape == BlockShape::ellipse, "shape",
                   "profile = \"strain\" needs shape = \"ellipse\" (its initial pressure is "
@@ -139,8 +158,16 @@ void read_blocks(const Section& root, CaseConfig& c) {
     const double eps = slack(c);
     for (const auto& s : blocks) {
         FluidBlock b;
-        b.lo = s.required_triple("lo", "lower corner of the block [m]");
-        b.hi = s.required_triple("hi", "upper corner of the block [m]");
+        b.shape = s.choice("shape", b.shape, kShapes);
+        if (b.shape == BlockShape::mesh) {
+            read_block_mesh(s, c, b);
+        } else {
+            for (const char* key :
+                 {"file", "scale", "rotation", "translation", "flip_normals", "section_z"})
+                s.require(s.node(key) == nullptr, key, "applies only to shape = \"mesh\"");
+            b.lo = s.required_triple("lo", "lower corner of the block [m]");
+            b.hi = s.required_triple("hi", "upper corner of the block [m]");
+        }
         for (std::size_t a = 0; a < static_cast<std::size_t>(c.dimension); ++a) {
             s.require(b.lo[a] < b.hi[a], "hi",
                       fmt::format("must be above lo on every axis; on {}: lo = {}, hi = {}",
@@ -156,7 +183,6 @@ void read_blocks(const Section& root, CaseConfig& c) {
         }
         if (auto v = s.triple("velocity"))
             b.velocity = *v;
-        b.shape = s.choice("shape", b.shape, kShapes);
         b.profile = s.choice("profile", b.profile, kProfiles);
         b.amplitude = s.number("amplitude", b.amplitude);
         b.hydrostatic = s.boolean("hydrostatic").value_or(b.hydrostatic);

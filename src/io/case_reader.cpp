@@ -68,12 +68,14 @@ CaseConfig read_case(const std::string& path, const std::vector<std::string>& ov
     CaseConfig c = build(root, r, path);
     c.fingerprint = case_fingerprint(root);
     // A shape's file is part of the case: a checkpoint continues only the same geometry.
-    if (!c.meshes.empty()) {
-        std::string all = c.fingerprint;
-        for (const auto& m : c.meshes)
-            all += m.digest;
+    std::string all = c.fingerprint;
+    for (const auto& m : c.meshes)
+        all += m.digest;
+    for (const auto& b : c.blocks)
+        if (b.mesh)
+            all += b.mesh->digest;
+    if (all != c.fingerprint)
         c.fingerprint = sha256_hex(all);
-    }
     return c;
 }
 

@@ -68,6 +68,8 @@ BuiltGeometry built_geometry(const CaseConfig& cfg, int layers) {
         }
         if (b.shape == BlockShape::ellipse)
             requested *= dim == 2 ? std::numbers::pi / 4 : std::numbers::pi / 6;
+        if (b.shape == BlockShape::mesh)
+            requested = b.mesh->shape->enclosed_volume();
         bb.particles = block_particles(cfg, b);
         bb.volume = static_cast<double>(bb.particles) * std::pow(dx, dim);
         bb.requested_volume = requested;

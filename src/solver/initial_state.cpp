@@ -227,6 +227,8 @@ bool inside_block_shape(const FluidBlock& b, const Triple& x, int dimension) {
         const double xi = (x[d] - 0.5 * (b.lo[d] + b.hi[d])) / half;
         r2 += xi * xi;
     }
+    if (b.shape == BlockShape::mesh)
+        return b.mesh->shape->inside(x);
     return b.shape == BlockShape::box || r2 <= 1;
 }
 

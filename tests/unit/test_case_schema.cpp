@@ -92,6 +92,17 @@ std::string mesh_file() {
     return path;
 }
 
+// A mesh block's shape for the keys that apply with blocks.shape = "mesh": a box cut by z = 0
+// into the base block's rectangle.
+std::string block_mesh_file() {
+    static const std::string path = [] {
+        const std::string p = sluice::test::temp_path("schema_block.stl");
+        sluice::test::write_ascii_stl(sluice::test::box_shape({0, 0, -1}, {0.5, 0.4, 1}), p);
+        return p;
+    }();
+    return path;
+}
+
 std::string base(const std::string& scheme) {
     std::string t = kBase;
     t.replace(t.find("SCHEME"), 6, scheme);
@@ -139,6 +150,8 @@ std::vector<std::string> when_overrides(const std::string& table, const std::str
         return {"probes.0.diameter=0.02"};
     if (when.empty() || when.rfind("type = ", 0) == 0)
         return {};
+    if (table == "blocks" && when == "shape = \"mesh\"")
+        return {"blocks.0.shape=\"mesh\"", "blocks.0.file=\"" + block_mesh_file() + "\""};
     const auto eq = when.find(" = ");
     std::string key = when.substr(0, eq);
     std::string value = when.substr(eq + 3);
@@ -149,12 +162,26 @@ std::vector<std::string> when_overrides(const std::string& table, const std::str
 }
 
 // Keys whose default is not a TOML value: computed from other keys, or "absent" means off.
-const std::set<std::string> kComputedDefaults = {
-    "case.name",        "domain.periodic",     "fluid.gravity",     "blocks.velocity",
-    "numerics.dt",      "walls.tank_faces",    "probes.diameter",   "probes.face",
-    "probes.box",       "probes.lo",           "probes.mesh",       "walls.meshes.translation",
-    "probes.hi",        "probes.moment_about", "probes.y",          "probes.min_thickness",
-    "limits.max_speed", "limits.min_density",  "limits.max_density"};
+const std::set<std::string> kComputedDefaults = {"case.name",
+                                                 "domain.periodic",
+                                                 "fluid.gravity",
+                                                 "blocks.velocity",
+                                                 "numerics.dt",
+                                                 "walls.tank_faces",
+                                                 "probes.diameter",
+                                                 "probes.face",
+                                                 "probes.box",
+                                                 "probes.lo",
+                                                 "probes.mesh",
+                                                 "walls.meshes.translation",
+                                                 "blocks.translation",
+                                                 "probes.hi",
+                                                 "probes.moment_about",
+                                                 "probes.y",
+                                                 "probes.min_thickness",
+                                                 "limits.max_speed",
+                                                 "limits.min_density",
+                                                 "limits.max_density"};
 
 } // namespace
 

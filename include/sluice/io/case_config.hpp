@@ -52,7 +52,7 @@ enum class WallModel { none, reflective, dummy };
 enum class VelocityProfile { uniform, taylor_green, rotating, strain };
 // Which lattice points of a block's box are filled: all of them, or those inside the ellipse
 // (ellipsoid in 3-D) inscribed in the box.
-enum class BlockShape { box, ellipse };
+enum class BlockShape { box, ellipse, mesh };
 enum class ProbeType { pressure, water_level, surge_front, force };
 // What an area sensor reads: the fluid's normal force on the wall under its face per unit area
 // (wall_force_sensor), the pressure interpolated on the face (wall_pressure_sensor; under the
@@ -60,6 +60,8 @@ enum class ProbeType { pressure, water_level, surge_front, force };
 // projection scheme's collisions: how much of the interpolated reading is the wall model's).
 // A force probe reads likewise the pair forces, the interpolated load, or its collisions alone.
 enum class SensorReading { force, interpolated, collisions };
+
+struct WallMesh;
 
 struct FluidBlock {
     Triple lo{}, hi{}; // [m] axis-aligned box filled on a lattice of spacing dx
@@ -70,8 +72,10 @@ struct FluidBlock {
     double angular_velocity = 0; // [rad/s] rotating profile, counter-clockwise positive (2-D)
     double strain_rate = 0;      // [1/s] strain profile: v = (-A0 x, A0 y) about the centre
     bool hydrostatic = true;     // initial density/pressure from rho0*|g|*(depth) with the EOS
+    // shape = mesh: the closed shape filled (its role unused), lo/hi its bounding box.
+    std::shared_ptr<const WallMesh> mesh;
 
-    bool operator==(const FluidBlock&) const = default;
+    bool operator==(const FluidBlock& o) const;
 };
 
 // A planar reflective wall: particles are kept on the side the normal points to.
@@ -113,6 +117,14 @@ struct WallMesh {
                flip_normals == o.flip_normals && section_z == o.section_z && digest == o.digest;
     }
 };
+
+inline bool FluidBlock::operator==(const FluidBlock& o) const {
+    return lo == o.lo && hi == o.hi && shape == o.shape && velocity == o.velocity &&
+           profile == o.profile && amplitude == o.amplitude &&
+           angular_velocity == o.angular_velocity && strain_rate == o.strain_rate &&
+           hydrostatic == o.hydrostatic && (mesh == nullptr) == (o.mesh == nullptr) &&
+           (mesh == nullptr || *mesh == *o.mesh);
+}
 
 // A wall surface a probe refers to: a tank face or an obstacle box (or one face of it).
 struct ProbeWall {
