@@ -225,7 +225,7 @@ const KeySpec kKeys[] = {
     {"probes", "face", "string", "", "–", one_of({"x-", "x+", "y-", "y+", "z-", "z+"}), Applies::any, "type = \"force\" | \"pressure\"",
      "force: the tank face loaded (\"x-\", \"x+\", …; must be in walls.tank_faces)."},
     {"probes", "mesh", "integer", "", "–", words("a walls.meshes index"), Applies::any, "type = \"force\"",
-     "force: the [[walls.meshes]] index loaded (0 = first): its wall particles within its bounding box (a surface's grown by the wall layers), cut to lo/hi."},
+     "force: the [[walls.meshes]] index loaded (0 = first): its own wall particles (inside a solid; behind a surface within its wall layers), cut to lo/hi; other walls' particles there do not count."},
     {"probes", "box", "integer", "", "–", words("a walls.boxes index"), Applies::any, "type = \"force\" | \"pressure\"",
      "force: the [[walls.boxes]] index loaded (0 = first)."},
     {"probes", "lo", "vector", "m", "the whole face or box", {}, Applies::any, "type = \"force\"",

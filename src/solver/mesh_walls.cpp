@@ -59,6 +59,16 @@ MeshWallCensus mesh_wall_census(const CaseConfig& cfg, std::size_t mesh, int lay
     return c;
 }
 
+bool wall_particle_of_mesh(const CaseConfig& cfg, std::size_t mesh, int layers, const Triple& x) {
+    const WallMesh& m = cfg.meshes.at(mesh);
+    const ClosestPoint c = m.shape->closest(x);
+    if (c.distance < 0.01 * cfg.dx)
+        return true;
+    if (m.role == MeshRole::solid)
+        return m.shape->inside(x);
+    return c.side < 0 && c.distance < layers * cfg.dx;
+}
+
 bool fluid_site_taken_by_mesh(const CaseConfig& cfg, const Triple& x) {
     const double keep = 0.5 * cfg.dx * (1 - 1e-9);
     for (const WallMesh& m : cfg.meshes) {

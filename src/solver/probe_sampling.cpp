@@ -3,6 +3,7 @@
 #include "probe_sampling.hpp"
 
 #include "particle_messages.hpp"
+#include "sluice/solver/mesh_walls.hpp"
 
 #include "sluice/physics/initial_profiles.hpp"
 #include "sluice/physics/kernels.hpp"
@@ -255,8 +256,18 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
                 load.moment[a] += contact.moment[a];
             }
         } else {
-            load =
-                wall_load(P, sim.kernel(), prm, wall_particles_in(P, region.lo, region.hi), about);
+            std::vector<std::size_t> walls = wall_particles_in(P, region.lo, region.hi);
+            if (probe.wall.mesh >= 0) {
+                const auto mesh = static_cast<std::size_t>(probe.wall.mesh);
+                const int layers = wall_layers(sim.kernel_support(), cfg.dx);
+                std::erase_if(walls, [&](std::size_t j) {
+                    Triple x{};
+                    for (int d = 0; d < D; ++d)
+                        x[static_cast<std::size_t>(d)] = double(P.x[j][d]);
+                    return !wall_particle_of_mesh(cfg, mesh, layers, x);
+                });
+            }
+            load = wall_load(P, sim.kernel(), prm, walls, about);
         }
         std::vector<double> row(load.force.begin(), load.force.begin() + D);
         if (probe.moment_about) {

@@ -6,7 +6,8 @@
 //    at the water's centre of mass (2 %; measured 0.03 %);
 //  - Archimedes: a 64-gon of radius 0.08 m (8 dx) held 0.2 m deep: the force on it is
 //    rho0 g A upwards (guard 4 %; measured +2.9 %, and +2.0 % at dx = 0.005; the column's
-//    compression alone makes the water 0.5 % denser at that depth) and nothing sideways.
+//    compression alone makes the water 0.5 % denser at that depth) and nothing sideways;
+//  - a bed polyline's force probe reads its own wall particles only (the column's weight at t = 0).
 #include "sluice/solver/simulation.hpp"
 #include "validation_support.hpp"
 
@@ -87,5 +88,23 @@ TEST_CASE("Archimedes: a submerged polygon is pushed up by the weight of the wat
     CHECK(rows >= 400);
     CHECK(fy == doctest::Approx(buoyancy).epsilon(0.04));
     CHECK(std::abs(fx) < 0.005 * buoyancy);
+    std::filesystem::remove_all(out);
+}
+
+TEST_CASE("A force probe on a bed mesh reads the bed's own wall particles, not the side walls") {
+    // cases/dam_break_ramp_2d.toml at its start: the reservoir stands on the flat part of the
+    // ramp polyline, whose region (its bounding box grown by the wall layers) also holds the
+    // tank's side walls' layers. Before the gate opens the bed carries the column's weight,
+    // 0.4 x 0.4 m x rho0 g (measured -1569.57 N/m against 1569.60; with the side walls'
+    // particles counted it read -1574.6).
+    const CaseConfig cfg = read_case(case_path("dam_break_ramp_2d.toml"),
+                                     {"time.end_time=0.001", "output.snapshots=false"});
+    const std::string out = run_in_temp_folder(cfg, "mesh_ramp_start", 2).folder;
+    const auto rows = read_csv(out + "/probes/ramp_force.csv");
+    REQUIRE(!rows.empty());
+    const double weight = cfg.rho0 * std::abs(cfg.gravity[1]) * 0.4 * 0.4;
+    const double fy = std::stod(rows[0].at(2));
+    std::printf("ramp bed at t = 0: Fy %.3f N/m against -%.3f\n", fy, weight);
+    CHECK(fy == doctest::Approx(-weight).epsilon(0.001));
     std::filesystem::remove_all(out);
 }

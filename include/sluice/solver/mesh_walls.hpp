@@ -27,6 +27,11 @@ struct MeshWallCensus {
 };
 MeshWallCensus mesh_wall_census(const CaseConfig& cfg, std::size_t mesh, int layers);
 
+// Whether a wall particle at x is one of the mesh's own: inside a solid (within dx/100 of
+// it), or behind a surface within its `layers` layers. A force probe on the mesh reads these
+// only, not the other walls its region holds (a tank floor under an obstacle, a side wall).
+bool wall_particle_of_mesh(const CaseConfig& cfg, std::size_t mesh, int layers, const Triple& x);
+
 // A fluid lattice site x (before settling and jitter) that a mesh takes: inside a solid,
 // behind a surface, or closer than dx/2 to either (where the innermost wall layer is dx/2
 // behind the surface, a fluid particle keeps at least dx from it). A block that reaches into a
