@@ -767,16 +767,16 @@ SHIPPED = [
          args=["polyline", "--ramp", "0", "1.6", "0.6", "10", "--note",
                "for a 2-D dam break over a slope in the 1.6 m tank of cases/dam_break_2d.toml "
                "(tank_lo.x = 0, tank_hi.x = 1.6)"]),
-    dict(file="sill_2d.csv",
-         what="2-D bed with a symmetric triangular sill (after Soares-Frazao 2007, dam break "
-              "over a triangular bottom sill)",
-         params="bed y = 0 from x = 0 to 5.6 m, sill 0.065 m high, crest at x = 4.45 m, foot "
-                "0.45 m either side (base 0.9 m); 5 vertices, right to left (normals up); "
-                "all four numbers to check against the paper",
-         args=["polyline", "--sill", "0", "5.6", "4.45", "0.065", "0.45", "--note",
-               "after Soares-Frazao (2007), dam-break wave over a triangular bottom sill; "
-               "flume length 5.6 m, sill height 0.065 m, crest at x = 4.45 m and half-base "
-               "0.45 m: numbers to check against the paper"]),
+    dict(file="cadam_sill_2d.csv",
+         what="2-D flume bed with a triangular sill: the dam break over a triangular bottom "
+              "sill (EU CADAM benchmark, as in Zhou et al. 2004)",
+         params="bed y = 0 from x = 0 to 38 m, sill 0.4 m high with its crest at x = 28.5 m "
+                "and feet 3 m either side (x = 25.5 and 31.5 m); 5 vertices, right to left "
+                "(normals up); `cases/dam_break_sill_2d.toml`",
+         args=["polyline", "--sill", "0", "38", "28.5", "0.4", "3", "--note",
+               "the flume of the CADAM dam break over a triangular bottom sill (Zhou, Causon, "
+               "Mingham & Ingram 2004, J. Hydraul. Eng. 130(4)): 38 m long, sill 0.4 m high "
+               "from x = 25.5 to 31.5 m"]),
     dict(file="tilted_box_3d.stl",
          what="Box 0.2 x 0.1 x 0.15 m rotated about its centre (outward normals)",
          params="lo (0.4, 0.45, 0.425), hi (0.6, 0.55, 0.575) m (centre (0.5, 0.5, 0.5)), "

@@ -409,6 +409,8 @@ std::optional<Crossing> SurfaceIndex::first_crossing(const Point3& a, const Poin
     };
     if (m.tri_tree) {
         const K::Segment_3 q(point(a), point(b));
+        if (!m.tri_tree->do_intersect(q)) // most moves: no list to build
+            return best;
         std::vector<TriTree::Primitive_id> hits;
         m.tri_tree->all_intersected_primitives(q, std::back_inserter(hits));
         for (const auto it : hits) {
@@ -424,6 +426,8 @@ std::optional<Crossing> SurfaceIndex::first_crossing(const Point3& a, const Poin
     }
     // 2-D: the move and the segments in the plane z = 0.
     const K::Segment_3 q(point({a[0], a[1], 0}), point({b[0], b[1], 0}));
+    if (!m.seg_tree->do_intersect(q))
+        return best;
     std::vector<SegTree::Primitive_id> hits;
     m.seg_tree->all_intersected_primitives(q, std::back_inserter(hits));
     const K::Segment_2 q2({a[0], a[1]}, {b[0], b[1]});

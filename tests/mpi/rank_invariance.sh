@@ -72,6 +72,14 @@ sluice_on 3 run "$src/tests/data/free_fall_exit.toml" --out "$work/free_fall_sto
 grep -q 'at the last good state 0 of 200 fluid particles (0 %) have a fluid neighbour closer than dx/2, the closest pair is 1 dx apart' \
     "$work/free_fall_stop.txt" ||
     { echo "FAIL free_fall_stop: no spacing over all ranks: $(cat "$work/free_fall_stop.txt")"; exit 1; }
+# A bed given as a polyline mesh: its wall layers, the fluid block cut to it, a force probe on
+# it; then the same bed as reflective segments (particles mirrored in the drift, the drift's
+# turned velocities kept from the other groups' continuity rates).
+check_case ramp_mesh_2d dam_break_ramp_2d.toml --set particles.dx=0.02 --set time.end_time=0.1 \
+    --set time.output_interval=0.025 --set runtime.rebalance_every=25
+check_case ramp_reflective_2d tests/data/mesh_loads/ramp_reflective_2d.toml \
+    --set particles.dx=0.02 --set time.end_time=0.1 --set time.output_interval=0.025 \
+    --set runtime.rebalance_every=25
 check_case dam_break_3d dam_break_3d.toml --set time.end_time=0.02 \
     --set time.output_interval=0.005 --set runtime.rebalance_every=15 \
     --set 'runtime.initial_decomposition="key-range"'
