@@ -7,7 +7,7 @@
 
 namespace sluice {
 
-ShapeReport report_shape(const SurfaceIndex& shape, double degenerate_below) {
+ShapeReport report_shape(const SurfaceIndex& shape, double degenerate_below, bool thickness) {
     const SurfaceGeometry& g = shape.geometry();
     ShapeReport r;
     r.elements = g.elements();
@@ -28,7 +28,7 @@ ShapeReport report_shape(const SurfaceIndex& shape, double degenerate_below) {
             ++r.degenerate;
             continue;
         }
-        if (!r.closed)
+        if (!r.closed || !thickness)
             continue;
         // From just inside the element's centre straight through the shape.
         Point3 c{};

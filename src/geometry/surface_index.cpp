@@ -375,6 +375,13 @@ double SurfaceIndex::squared_distance(const Point3& x) const {
     return CGAL::to_double(m.seg_tree->squared_distance(point({x[0], x[1], 0})));
 }
 
+bool SurfaceIndex::within(const Point3& x, double r) const {
+    const Impl& m = *impl_;
+    if (m.tri_tree)
+        return m.tri_tree->do_intersect(K::Sphere_3(point(x), r * r));
+    return m.seg_tree->do_intersect(K::Sphere_3(point({x[0], x[1], 0}), r * r));
+}
+
 bool SurfaceIndex::inside(const Point3& x) const {
     const Impl& m = *impl_;
     if (!m.closed)

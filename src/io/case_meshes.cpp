@@ -100,7 +100,7 @@ ShapeReport read_shape_file(const Section& s, const CaseConfig& c, WallMesh& m) 
     // Degenerate: smaller than a millionth of dx (area: of dx^2).
     const double tiny = c.dimension == 3 ? 1e-12 * c.dx * c.dx : 1e-6 * c.dx;
     auto shape = std::make_shared<SurfaceIndex>(std::move(g));
-    const ShapeReport r = report_shape(*shape, tiny);
+    const ShapeReport r = report_shape(*shape, tiny, false); // thickness: info and check
     s.require(r.degenerate * 100 <= r.elements, "file",
               fmt::format("\"{}\": {} of its {} {} are degenerate (size below {:g}); repair "
                           "the mesh",

@@ -72,10 +72,22 @@ bool wall_particle_of_mesh(const CaseConfig& cfg, std::size_t mesh, int layers, 
 bool fluid_site_taken_by_mesh(const CaseConfig& cfg, const Triple& x) {
     const double keep = 0.5 * cfg.dx * (1 - 1e-9);
     for (const WallMesh& m : cfg.meshes) {
+        // A solid takes nothing beyond dx/2 of its bounding box (most sites of a block): no
+        // query. (Behind a surface is anywhere below a bed, so a surface is always asked.)
+        if (m.role == MeshRole::solid) {
+            bool near = true;
+            for (std::size_t a = 0; a < static_cast<std::size_t>(cfg.dimension); ++a)
+                near = near && x[a] > m.shape->lo()[a] - keep && x[a] < m.shape->hi()[a] + keep;
+            if (!near)
+                continue;
+        }
+        if (m.role == MeshRole::solid) {
+            if (m.shape->inside(x) || m.shape->within(x, keep))
+                return true;
+            continue;
+        }
         const ClosestPoint c = m.shape->closest(x);
-        if (c.distance < keep)
-            return true;
-        if (m.role == MeshRole::solid ? m.shape->inside(x) : c.side < 0)
+        if (c.distance < keep || c.side < 0)
             return true;
     }
     return false;

@@ -214,6 +214,9 @@ TEST_CASE("behind a corner the side is the corner's, not the nearest face's") {
     CHECK(cube.closest({1.1, 1.1, 0.5}).side > 0.99); // edge: (1, 1, 0) / sqrt 2 pseudo-normal
     CHECK(cube.closest({1.1, 1.1, 1.1}).side > 0.99); // corner
     CHECK(cube.closest({0.95, 0.97, 0.5}).side < -0.99);
+    CHECK(cube.within({1.05, 0.5, 0.5}, 0.06)); // the sphere query of the fluid's cut
+    CHECK_FALSE(cube.within({1.05, 0.5, 0.5}, 0.04));
+    CHECK_FALSE(cube.within({0.5, 0.5, 0.5}, 0.4)); // inside, far from every face
     // Open: a single square (two triangles, normal +z). Beyond its edge, level with it, the
     // side is 0 (the edge's pseudo-normal is the face's); above it, positive.
     SurfaceGeometry sq;

@@ -24,7 +24,8 @@ struct ShapeReport {
 };
 
 // The report of a shape; elements below `degenerate_below` (area in 3-D, length in 2-D) count
-// as degenerate.
-ShapeReport report_shape(const SurfaceIndex& shape, double degenerate_below);
+// as degenerate. The thinnest part costs a ray through the shape per element (seconds for
+// 100,000 triangles): without `thickness` it is left at infinity.
+ShapeReport report_shape(const SurfaceIndex& shape, double degenerate_below, bool thickness = true);
 
 } // namespace sluice

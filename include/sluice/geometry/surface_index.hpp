@@ -55,6 +55,8 @@ public:
 
     [[nodiscard]] ClosestPoint closest(const Point3& x) const;
     [[nodiscard]] double squared_distance(const Point3& x) const;
+    // Some element within distance r of x (a sphere query: stops at the first one found).
+    [[nodiscard]] bool within(const Point3& x, double r) const;
     // Inside the enclosed volume (points on the surface count as inside). Closed shapes only.
     [[nodiscard]] bool inside(const Point3& x) const;
     // The first crossing of the segment a -> b with the surface, if any: with any element, or
