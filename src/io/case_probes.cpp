@@ -167,9 +167,22 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
     s.require(c.walls == WallModel::dummy, "diameter",
               "an area sensor sits on dummy wall particles (walls.model = \"dummy\")");
     const auto given = read_probe_wall(s, c);
-    s.require(!given || given->mesh < 0, "mesh",
-              "an area sensor sits on a tank face or a walls.boxes obstacle; on a mesh, read the "
-              "load of a part of it with a force probe (mesh, lo, hi)");
+    if (given && given->mesh >= 0) {
+        // On a mesh: the face centred at the mesh point nearest the given position, facing
+        // along the nearest element's normal.
+        const WallMesh& m = c.meshes[static_cast<std::size_t>(given->mesh)];
+        const ClosestPoint q = m.shape->closest(p.position);
+        s.require(q.distance <= c.dx + slack(c), "position",
+                  fmt::format("the sensor is off the mesh \"{}\": its centre must lie on its "
+                              "surface within dx = {} (the nearest surface point is {:.4g} m "
+                              "away)",
+                              m.file, c.dx, q.distance));
+        p.wall = *given;
+        p.sensor_centre = q.point;
+        for (std::size_t a = 0; a < 3; ++a)
+            p.sensor_normal[a] = -q.normal[a]; // into the wall
+        return;
+    }
     const auto dim = static_cast<std::size_t>(c.dimension);
     const double eps = slack(c);
     double best = std::numeric_limits<double>::infinity();
@@ -263,7 +276,7 @@ void read_probes(const Section& root, CaseConfig& c) {
         only_for("reading", pressure || force);
         only_for("face", pressure || force);
         only_for("box", pressure || force);
-        only_for("mesh", force);
+        only_for("mesh", pressure || force);
         only_for("lo", force);
         only_for("hi", force);
         only_for("moment_about", force);
@@ -278,12 +291,18 @@ void read_probes(const Section& root, CaseConfig& c) {
                 p.diameter = s.required_number("diameter", "sensor diameter [m]");
                 read_sensor_wall(s, c, p);
                 p.reading = read_reading(s, c, "");
+                s.require(p.wall.mesh < 0 || p.reading == SensorReading::force, "reading",
+                          "a sensor on a mesh reads the wall pairs' force (reading = "
+                          "\"force\"); the interpolated reading needs a tank face or a "
+                          "walls.boxes box");
             } else {
                 s.require(s.node("reading") == nullptr, "reading",
                           "only an area sensor (with a diameter) has a reading; a point probe "
                           "interpolates the fluid's pressure");
-                s.require(s.node("face") == nullptr && s.node("box") == nullptr,
-                          s.node("face") != nullptr ? "face" : "box",
+                s.require(s.node("face") == nullptr && s.node("box") == nullptr &&
+                              s.node("mesh") == nullptr,
+                          s.node("face") != nullptr ? "face"
+                                                    : (s.node("box") != nullptr ? "box" : "mesh"),
                           "only an area sensor (with a diameter) sits on a wall");
             }
         }

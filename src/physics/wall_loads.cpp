@@ -357,6 +357,36 @@ Real force_sensor_with(const Particles<D>& P, const K& kernel, const WallLoadPar
     return Real(double(prm.p_gauge) + sum / double(points));
 }
 
+template <int D, class K>
+Real oriented_force_sensor_with(const Particles<D>& P, const K& kernel,
+                                const WallLoadParams<D>& prm, const OrientedSensorFace<D>& face,
+                                const std::vector<std::size_t>& candidates, Real wall_dx) {
+    const Real radius = face.diameter / 2;
+    std::vector<std::size_t> walls;
+    std::size_t innermost = 0;
+    for (std::size_t j : candidates) {
+        const Vec<D> r = P.x[j] - face.centre;
+        const Real depth = r.dot(face.into_wall);
+        if (P.kind[j] != Kind::wall || !(depth > 0) || depth >= kernel.support())
+            continue;
+        if ((r - depth * face.into_wall).norm() > radius)
+            continue;
+        walls.push_back(j);
+        innermost += depth < wall_dx ? 1 : 0;
+    }
+    double normal_force = 0;
+    std::size_t pairs = 0;
+    for_each_wall_force(P, kernel, prm, walls, [&](std::size_t, const auto& f, std::size_t n) {
+        for (int d = 0; d < D; ++d)
+            normal_force += double(face.into_wall[d]) * double(f[d]);
+        pairs += n;
+    });
+    if (pairs == 0 || innermost == 0)
+        return std::numeric_limits<Real>::quiet_NaN();
+    const double area = double(innermost) * std::pow(double(wall_dx), D - 1);
+    return Real(double(prm.p_gauge) + normal_force / area);
+}
+
 // Whether x lies in the closed box [lo, hi].
 template <int D>
 bool in_closed_box(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
@@ -496,6 +526,23 @@ Real wall_force_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
                       kernel);
 }
 
+template <int D>
+Real oriented_wall_force_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
+                                const WallLoadParams<D>& prm, const OrientedSensorFace<D>& face,
+                                const std::vector<std::size_t>& candidates, Real wall_dx) {
+    return std::visit(
+        [&](const auto& k) {
+            return oriented_force_sensor_with(P, k, prm, face, candidates, wall_dx);
+        },
+        kernel);
+}
+
+template Real oriented_wall_force_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
+                                            const WallLoadParams<2>&, const OrientedSensorFace<2>&,
+                                            const std::vector<std::size_t>&, Real);
+template Real oriented_wall_force_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
+                                            const WallLoadParams<3>&, const OrientedSensorFace<3>&,
+                                            const std::vector<std::size_t>&, Real);
 template void refresh_dummy_walls<2>(Particles<2>&, const AnyKernel<2>&, const Eos&, const Vec<2>&,
                                      Real);
 template void refresh_dummy_walls<3>(Particles<3>&, const AnyKernel<3>&, const Eos&, const Vec<3>&,

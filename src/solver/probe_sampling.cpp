@@ -141,9 +141,11 @@ Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
     switch (probe.type) {
     case ProbeType::pressure:
         for (int a = 0; a < D; ++a) {
-            const Real c = a == probe.sensor_axis
-                               ? Real(probe.sensor_surface)
-                               : Real(probe.position[static_cast<std::size_t>(a)]);
+            const auto k = static_cast<std::size_t>(a);
+            const Real c = probe.diameter > 0 && probe.wall.mesh >= 0
+                               ? Real(probe.sensor_centre[k])
+                               : (a == probe.sensor_axis ? Real(probe.sensor_surface)
+                                                         : Real(probe.position[k]));
             box.lo[a] = c;
             box.hi[a] = c;
         }
@@ -188,6 +190,41 @@ SensorFace<D> sensor_face(const ProbeConfig& probe) {
     return {point, probe.sensor_axis, probe.sensor_into_wall, Real(probe.diameter)};
 }
 
+// Of the wall particles `walls`, only the mesh's own (wall_particle_of_mesh): a mesh's region
+// also holds other walls' layers (a floor under an obstacle, side walls beside a bed).
+template <int D>
+void keep_walls_of_mesh(const Simulation<D>& sim, const Particles<D>& P, std::size_t mesh,
+                        std::vector<std::size_t>& walls) {
+    const CaseConfig& cfg = sim.config();
+    const int layers = wall_layers(sim.kernel_support(), cfg.dx);
+    std::erase_if(walls, [&](std::size_t j) {
+        Triple x{};
+        for (int d = 0; d < D; ++d)
+            x[static_cast<std::size_t>(d)] = double(P.x[j][d]);
+        return !wall_particle_of_mesh(cfg, mesh, layers, x);
+    });
+}
+
+// A force-reading area sensor on a mesh: the mesh's own wall particles near the face
+// (wall_particle_of_mesh) read by oriented_wall_force_sensor.
+template <int D>
+Real mesh_sensor_reading(const Simulation<D>& sim, const Particles<D>& P,
+                         const ProbeConfig& probe) {
+    const CaseConfig& cfg = sim.config();
+    OrientedSensorFace<D> face;
+    for (int d = 0; d < D; ++d) {
+        face.centre[d] = Real(probe.sensor_centre[static_cast<std::size_t>(d)]);
+        face.into_wall[d] = Real(probe.sensor_normal[static_cast<std::size_t>(d)]);
+    }
+    face.diameter = Real(probe.diameter);
+    const Real reach = face.diameter / 2 + sim.kernel_support();
+    std::vector<std::size_t> walls = wall_particles_in(P, Vec<D>(face.centre.array() - reach),
+                                                       Vec<D>(face.centre.array() + reach));
+    keep_walls_of_mesh(sim, P, static_cast<std::size_t>(probe.wall.mesh), walls);
+    return oriented_wall_force_sensor(P, sim.kernel(), wall_load_params(sim), face, walls,
+                                      Real(cfg.dx));
+}
+
 template <int D>
 Box<D> sensor_contact_box(const Simulation<D>& sim, const ProbeConfig& probe) {
     const SensorFace<D> face = sensor_face<D>(probe);
@@ -217,6 +254,8 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
                 point[d] = Real(probe.position[static_cast<std::size_t>(d)]);
             return {double(pressure_probe(P, sim.kernel(), point, p_min))};
         }
+        if (probe.wall.mesh >= 0)
+            return {double(mesh_sensor_reading(sim, P, probe))};
         const SensorFace<D> face = sensor_face<D>(probe);
         if (probe.reading == SensorReading::force)
             return {double(wall_force_sensor(P, sim.kernel(), wall_load_params(sim), face, dx))};
@@ -257,16 +296,8 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
             }
         } else {
             std::vector<std::size_t> walls = wall_particles_in(P, region.lo, region.hi);
-            if (probe.wall.mesh >= 0) {
-                const auto mesh = static_cast<std::size_t>(probe.wall.mesh);
-                const int layers = wall_layers(sim.kernel_support(), cfg.dx);
-                std::erase_if(walls, [&](std::size_t j) {
-                    Triple x{};
-                    for (int d = 0; d < D; ++d)
-                        x[static_cast<std::size_t>(d)] = double(P.x[j][d]);
-                    return !wall_particle_of_mesh(cfg, mesh, layers, x);
-                });
-            }
+            if (probe.wall.mesh >= 0)
+                keep_walls_of_mesh(sim, P, static_cast<std::size_t>(probe.wall.mesh), walls);
             load = wall_load(P, sim.kernel(), prm, walls, about);
         }
         std::vector<double> row(load.force.begin(), load.force.begin() + D);

@@ -182,3 +182,27 @@ TEST_CASE("a closed mesh as a fluid block fills its inside on the lattice") {
     }
     std::filesystem::remove(path);
 }
+
+TEST_CASE("an area sensor on a mesh: centred on the surface, facing into the wall, or refused") {
+    const std::string path = test::temp_path("sensor_box.stl");
+    test::write_ascii_stl(test::box_shape({0.3, 0.2, 0}, {0.4, 0.4, 0.3}), path);
+    const auto with_sensor = [&](const std::string& position, const std::string& extra) {
+        return case_with_mesh(path) + "[[probes]]\nname = \"s\"\ntype = \"pressure\"\n" +
+               "position = " + position + "\ndiameter = 0.05\nmesh = 0\n" + extra;
+    };
+    // 0.004 m in front of the box's x- face: centred on it, into the wall along +x.
+    const CaseConfig cfg = read_case_text(with_sensor("[0.296, 0.3, 0.15]", ""), "s.toml", {});
+    const ProbeConfig& p = cfg.probes.at(0);
+    CHECK(p.wall.mesh == 0);
+    CHECK(p.sensor_centre[0] == doctest::Approx(0.3));
+    CHECK(p.sensor_centre[2] == doctest::Approx(0.15));
+    CHECK(p.sensor_normal[0] == doctest::Approx(1));
+    CHECK(p.sensor_normal[1] == doctest::Approx(0).epsilon(1e-12));
+    CHECK_THROWS_WITH(read_case_text(with_sensor("[0.25, 0.3, 0.15]", ""), "s.toml", {}),
+                      doctest::Contains("probes[0].position"));
+    CHECK_THROWS_WITH(
+        read_case_text(with_sensor("[0.296, 0.3, 0.15]", "reading = \"interpolated\"\n"), "s.toml",
+                       {}),
+        doctest::Contains("probes[0].reading"));
+    std::filesystem::remove(path);
+}

@@ -3,7 +3,8 @@
 //  - a container traced as one polyline, vertical sides and a bed tilted at 10 degrees: the
 //    force on it is the water's weight straight down (1 %; measured 0.08 %), nothing sideways
 //    (0.5 % of the weight; measured 0.01 %), and its moment about the origin that of the weight
-//    at the water's centre of mass (2 %; measured 0.03 %);
+//    at the water's centre of mass (2 %; measured 0.03 %); area sensors on its bed and its side
+//    wall read the hydrostatic pressure at their centres (2 %; measured -0.3 % and -0.8 %);
 //  - Archimedes: a 64-gon of radius 0.08 m (8 dx) held 0.2 m deep: the force on it is
 //    rho0 g A upwards (guard 4 %; measured +2.9 %, and +2.0 % at dx = 0.005; the column's
 //    compression alone makes the water 0.5 % denser at that depth) and nothing sideways;
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <utility>
 
 using namespace sluice;
 using namespace sluice::testing;
@@ -68,6 +70,17 @@ TEST_CASE("A container traced as a polyline carries the water's weight at its ce
     CHECK(fy == doctest::Approx(-weight).epsilon(0.01));
     CHECK(std::abs(fx) < 0.005 * weight);
     CHECK(mz == doctest::Approx(-moment).epsilon(0.02));
+    // Area sensors on the mesh (its tilted bed at x = 0.2 m, its right wall at y = 0.25 m):
+    // rho0 g times the depth of the centre below the settled surface, which the column's own
+    // compression sets g H^2 / (2 c0^2) = 2 mm below the block's top.
+    const double H = 0.4 - g * 0.4 * 0.4 / (2 * cfg.sound_speed * cfg.sound_speed);
+    for (const auto& [name, y] : {std::pair{"bed_sensor", 0.0852654}, {"wall_sensor", 0.25}}) {
+        const double p = mean_from(out + "/probes/" + name + ".csv", 1, 0.5, rows);
+        const double ref = cfg.rho0 * g * (H - y);
+        std::printf("tilted container: %s %.1f Pa against %.1f (%+.2f %%)\n", name, p, ref,
+                    100 * (p / ref - 1));
+        CHECK(p == doctest::Approx(ref).epsilon(0.02));
+    }
     std::filesystem::remove_all(out);
 }
 

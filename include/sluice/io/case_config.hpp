@@ -153,6 +153,9 @@ struct ProbeConfig {
     int sensor_axis = -1;               // pressure with a diameter: the wall's normal axis
     double sensor_surface = 0;          // ... and the surface's coordinate on it [m]
     int sensor_into_wall = 0;           // ... and the wall's side along the axis (+1 or -1)
+    // A sensor on a mesh (wall.mesh >= 0; sensor_axis stays -1): its centre on the surface and
+    // the unit normal into the wall there.
+    Triple sensor_centre{}, sensor_normal{};
     SensorReading reading = SensorReading::force; // pressure with a diameter
     int direction_axis = 0;                       // surge front: axis of "+x", "-y", ...
     bool direction_negative = false;              // ... and its sign

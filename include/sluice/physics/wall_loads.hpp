@@ -110,6 +110,29 @@ template <int D>
 Real wall_force_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
                        const WallLoadParams<D>& prm, const SensorFace<D>& face, Real wall_dx);
 
+// An area sensor on a wall of any orientation (on a mesh): its centre on the surface, the unit
+// normal pointing into the wall, its diameter (a disc in 3-D, a segment in 2-D).
+template <int D>
+struct OrientedSensorFace {
+    Vec<D> centre = Vec<D>::Zero();
+    Vec<D> into_wall = Vec<D>::Zero();
+    Real diameter = 0;
+};
+
+// What a flush-mounted transducer on such a wall reads: the normal force the fluid exerts on
+// the wall particles under its face (of `candidates`, those behind the surface within a kernel
+// support whose position along the surface lies within the face), over the surface they stand
+// for: the innermost layer's particles under the face (within wall_dx of the surface) times
+// wall_dx^(D-1), one per wall_dx^(D-1) of surface (physics of the mesh layers, shape_particles),
+// plus prm.p_gauge. Layers laid along a tilted or curved surface do not line up in columns as a
+// tank face's do, so the face is not sampled column by column (wall_force_sensor); the count
+// of the innermost layer takes the place of the face's area and follows the sites at its edge.
+// NaN when no fluid pair reaches the face's particles.
+template <int D>
+Real oriented_wall_force_sensor(const Particles<D>& P, const AnyKernel<D>& kernel,
+                                const WallLoadParams<D>& prm, const OrientedSensorFace<D>& face,
+                                const std::vector<std::size_t>& candidates, Real wall_dx);
+
 // The alternative reading: the fluid's pressure interpolated on the face. The face is sampled
 // on a lattice of spacing at most `spacing` (face_samples), and each sample point's pressure
 // is the Shepard interpolation over fluid AND wall particles
@@ -232,6 +255,15 @@ extern template Real contact_traction<2>(const std::vector<WallContact<2>>&, con
                                          Real, Real, Real);
 extern template Real contact_traction<3>(const std::vector<WallContact<3>>&, const SensorFace<3>&,
                                          Real, Real, Real);
+extern template Real oriented_wall_force_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
+                                                   const WallLoadParams<2>&,
+                                                   const OrientedSensorFace<2>&,
+                                                   const std::vector<std::size_t>&, Real);
+extern template Real oriented_wall_force_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
+                                                   const WallLoadParams<3>&,
+                                                   const OrientedSensorFace<3>&,
+                                                   const std::vector<std::size_t>&, Real);
+
 extern template Real wall_force_sensor<2>(const Particles<2>&, const AnyKernel<2>&,
                                           const WallLoadParams<2>&, const SensorFace<2>&, Real);
 extern template Real wall_force_sensor<3>(const Particles<3>&, const AnyKernel<3>&,
