@@ -10,7 +10,8 @@
 #              proof that TSan sees a missing edge (below); no simulation code is built;
 #   tsan-full  (not by default) tsan plus the solver's thread invariance and the MPI halo and
 #              migration tests (label `runtime`);
-#   fuzz       the case-reader fuzzer for 30 s (scripts/fuzz.sh; seconds: SLUICE_FUZZ_SECONDS),
+#   fuzz       the case-reader fuzzer for 30 s and the shape-reader fuzzer for a third of that
+#              (scripts/fuzz.sh; seconds: SLUICE_FUZZ_SECONDS),
 #              built from the case reader's and the case checks' sources only.
 # The *-full stages did not fit CI's 30 minutes (the numbers and the reason: README,
 # "Continuous integration"); run them with `bash scripts/ci.sh asan-full tsan-full`.

@@ -66,6 +66,11 @@ case_debris_box_3d() {
         --set time.end_time=0.3 --set time.output_interval=0.02
     plot snapshot debris_box_3d snapshot --field velocity
 }
+case_dam_break_ramp_2d() {
+    run cases/dam_break_ramp_2d.toml dam_break_ramp_2d # case resolution dx = 0.01 m
+    plot snapshot dam_break_ramp_2d snapshot --time 0.6
+    plot probes dam_break_ramp_2d probes
+}
 case_dam_break_mach() {
     run cases/hard/dam_break_mach.toml dam_break_mach --set particles.dx=0.02 --set time.end_time=0.3
     plot snapshot dam_break_mach snapshot
@@ -104,7 +109,7 @@ case_timeline() { # not a case: the task timeline of a 2-rank run of dam_break_2
 }
 
 all=(dam_break_2d hydrostatic_2d poiseuille_2d taylor_green_2d dam_break_3d debris_box_3d
-    dam_break_mach elliptical_drop high_speed_impact rotating_square_patch still_water_long timeline)
+    dam_break_ramp_2d dam_break_mach elliptical_drop high_speed_impact rotating_square_patch still_water_long timeline)
 mkdir -p "$OUT" "$PNG"
 for c in "${@:-${all[@]}}"; do
     "case_$c"

@@ -197,6 +197,10 @@ struct SurfaceIndex::Impl {
     std::vector<std::vector<K::Point_2>> loops;           // closed 2-D shapes
     std::vector<Point3> vertex_normals;                   // pseudo-normals (unnormalised)
     std::vector<std::array<std::uint32_t, 3>> neighbours; // 3-D: across each edge
+    // Elements of no size (collinear or repeated vertices, up to round-off against the shape's
+    // size): no normal, and CGAL's segment-triangle intersection asserts on them. Skipped by
+    // the crossing queries.
+    std::vector<bool> degenerate;
 
     // The pseudo-normal of the feature of element e that p (its closest point to some x)
     // lies on: the element's normal inside it, an edge's or a vertex's at its boundary.
@@ -262,9 +266,11 @@ SurfaceIndex::SurfaceIndex(SurfaceGeometry geometry) : impl_(std::make_unique<Im
         }
     };
     m.normals.reserve(g.elements());
+    std::vector<double> sizes(g.elements());
     for (std::size_t e = 0; e < g.elements(); ++e) {
         m.normals.push_back(element_normal(g, e));
-        m.size += element_size(g, e);
+        sizes[e] = element_size(g, e);
+        m.size += sizes[e];
     }
     if (g.dimension == 3) {
         m.triangles.reserve(g.triangles.size());
@@ -289,6 +295,13 @@ SurfaceIndex::SurfaceIndex(SurfaceGeometry geometry) : impl_(std::make_unique<Im
         m.seg_tree->build();
         m.seg_tree->accelerate_distance_queries();
     }
+    double diagonal2 = 0;
+    for (std::size_t a = 0; a < 3; ++a)
+        diagonal2 += (m.hi[a] - m.lo[a]) * (m.hi[a] - m.lo[a]);
+    const double tiny = 1e-24 * (g.dimension == 3 ? diagonal2 : std::sqrt(diagonal2));
+    m.degenerate.resize(g.elements());
+    for (std::size_t e = 0; e < g.elements(); ++e)
+        m.degenerate[e] = !(sizes[e] > tiny);
     m.vertex_normals = vertex_pseudo_normals(g, m.normals);
     if (g.dimension == 3)
         m.neighbours = edge_neighbours(g);
@@ -421,6 +434,8 @@ std::optional<Crossing> SurfaceIndex::first_crossing(const Point3& a, const Poin
         std::vector<TriTree::Primitive_id> hits;
         m.tri_tree->all_intersected_primitives(q, std::back_inserter(hits));
         for (const auto it : hits) {
+            if (m.degenerate[m.element_of(it)])
+                continue;
             const auto r = CGAL::intersection(q, *it);
             if (!r)
                 continue;
@@ -439,6 +454,8 @@ std::optional<Crossing> SurfaceIndex::first_crossing(const Point3& a, const Poin
     m.seg_tree->all_intersected_primitives(q, std::back_inserter(hits));
     const K::Segment_2 q2({a[0], a[1]}, {b[0], b[1]});
     for (const auto it : hits) {
+        if (m.degenerate[m.element_of(it)])
+            continue;
         const K::Segment_2 s2({it->source().x(), it->source().y()},
                               {it->target().x(), it->target().y()});
         const auto r = CGAL::intersection(q2, s2);
