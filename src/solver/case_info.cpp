@@ -86,11 +86,14 @@ std::vector<std::string> geometry_lines(const CaseConfig& cfg, int layers) {
         std::string sites;
         for (int d = 0; d < dim; ++d)
             sites += fmt::format("{}{}", d ? " x " : "", b.sites[static_cast<std::size_t>(d)]);
+        // A box or ellipse that a wall mesh cuts is compared with its uncut volume.
+        const bool cut = !cfg.meshes.empty() && cfg.blocks[i].shape != BlockShape::mesh;
         out.push_back(fmt::format("blocks[{}]: {} to {} m (case to {}), {} sites, {} particles, "
-                                  "volume {:.6g} m^{} (case {:.6g}, {:+.2f} %)",
+                                  "volume {:.6g} m^{} (case {:.6g}{}, {:+.2f} %)",
                                   i, vec_str(cfg.blocks[i].lo, dim), vec_str(b.hi, dim),
                                   vec_str(cfg.blocks[i].hi, dim), sites, b.particles, b.volume, dim,
-                                  b.requested_volume, 100 * (b.volume / b.requested_volume - 1)));
+                                  b.requested_volume, cut ? " before the wall meshes cut it" : "",
+                                  100 * (b.volume / b.requested_volume - 1)));
     }
     for (std::size_t i = 0; i < g.meshes.size(); ++i) {
         const BuiltMesh& m = g.meshes[i];
