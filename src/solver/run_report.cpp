@@ -55,6 +55,7 @@ std::vector<double> profile_numbers(const Simulation<D>& sim) {
     v.push_back(pr.exposed);
     v.push_back(static_cast<double>(tasks::Comm::bytes_sent()));
     v.push_back(static_cast<double>(sim.owned()));
+    v.push_back(pr.task_cpu);
     return v;
 }
 
@@ -64,7 +65,7 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
     const std::size_t S = stages.size();
     nlohmann::json ranks = nlohmann::json::array();
     std::vector<double> busy;
-    double comm = 0, exposed = 0, bytes = 0;
+    double comm = 0, exposed = 0, bytes = 0, task_cpu = 0;
     std::vector<double> stage_total(S, 0.0);
     if (print) {
         std::string head = "rank";
@@ -82,11 +83,14 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
             stage_total[s] += v[s];
         }
         const double halo = v[S], b = v[S + 1], gw = v[S + 2], bw = v[S + 3], c = v[S + 4],
-                     x = v[S + 5], sent = v[S + 6], owned = v[S + 7];
+                     x = v[S + 5], sent = v[S + 6], owned = v[S + 7], cpu = v[S + 8];
         j["rank"] = r;
         j["stage_busy_seconds"] = st;
         j["halo_pack_seconds"] = halo;
         j["busy_seconds"] = b;
+        // The tasks' thread CPU time: their work, which busy_seconds (wall intervals)
+        // overstates when ranks x threads exceed the cores.
+        j["task_cpu_seconds"] = cpu;
         j["graph_wall_seconds"] = gw;
         j["between_steps_wall_seconds"] = bw;
         j["communication_seconds"] = c;
@@ -100,6 +104,7 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
         comm += c;
         exposed += x;
         bytes += sent;
+        task_cpu += cpu;
         if (print) {
             std::string line = fmt::format("{:>4}", r);
             for (std::size_t s = 0; s < S; ++s)
@@ -115,6 +120,7 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
     for (std::size_t s = 0; s < S; ++s)
         st[stages[s]] = stage_total[s];
     total["stage_busy_seconds"] = st;
+    total["task_cpu_seconds"] = task_cpu;
     total["communication_seconds"] = comm;
     total["idle_waiting_for_messages_seconds"] = exposed;
     total["hidden_communication_seconds"] = comm - exposed;

@@ -67,6 +67,7 @@ void RankProfile::add_step(const StepGraph& g, const std::vector<MessageRecord>&
         if (r.end <= r.start)
             continue;
         tasks.push_back({r.start, r.end});
+        task_cpu += r.cpu;
         if (r.stage >= 0)
             stage_busy[static_cast<std::size_t>(r.stage)] += r.end - r.start;
         else

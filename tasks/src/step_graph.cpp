@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <ctime>
 #include <stdexcept>
 #include <thread>
 
@@ -41,6 +42,12 @@ double post(const Bytes& buffer, int peer, int exchange, MPI_Request* request) {
 
 double clock_seconds() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_origin()).count();
+}
+
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 void reset_clock_origin() {
     clock_origin() = std::chrono::steady_clock::now();
@@ -125,7 +132,8 @@ void StepGraph::open_gate(bool skip) {
             continue_msg());
 }
 
-void StepGraph::record(std::size_t slot, int stage, int group, int exchange, double t0) {
+void StepGraph::record(std::size_t slot, int stage, int group, int exchange, double t0,
+                       double cpu0) {
     TaskRecord& r = records_[slot];
     r.stage = stage;
     r.group = group;
@@ -133,6 +141,7 @@ void StepGraph::record(std::size_t slot, int stage, int group, int exchange, dou
     r.thread = tbb::this_task_arena::current_thread_index();
     r.start = t0;
     r.end = clock_seconds();
+    r.cpu = thread_cpu_seconds() - cpu0;
 }
 
 StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vector<int>>& neighbours,
@@ -186,11 +195,12 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                         tsan::acquire(&run_start_token);
                         impl_->begin_task(slot);
                         const double t0 = clock_seconds();
+                        const double cpu0 = thread_cpu_seconds();
                         guard([&] {
                             if (!skipped(s))
                                 body_(s, grp);
                         });
-                        record(slot, s, grp, -1, t0);
+                        record(slot, s, grp, -1, t0, cpu0);
                         impl_->end_task(slot);
                     },
                     facing_any[static_cast<std::size_t>(grp)] ? boundary : interior));
@@ -231,12 +241,13 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                             return;
                         }
                         const double t0 = clock_seconds();
+                        const double cpu0 = thread_cpu_seconds();
                         guard([&] {
                             send_buf_[k].clear(); // skipped: an empty message
                             if (!skipped(after))
                                 halo_.data->pack(e, p, send_buf_[k]);
                         });
-                        record(n + k, -1, p, e, t0);
+                        record(n + k, -1, p, e, t0, cpu0);
                         // Posted here, not at the main thread's next poll (up to 1 ms later
                         // while tasks run): the peer may be waiting for it.
                         if (impl_->workers_post)
@@ -255,11 +266,12 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                         tsan::acquire(&run_start_token);
                         impl_->begin_task(n + m + k);
                         const double t0 = clock_seconds();
+                        const double cpu0 = thread_cpu_seconds();
                         guard([&] {
                             if (after < 0 || !skipped(after))
                                 halo_.data->unpack(e, p, recv_buf_[k]);
                         });
-                        record(n + m + k, -2, p, e, t0);
+                        record(n + m + k, -2, p, e, t0, cpu0);
                         impl_->end_task(n + m + k);
                     },
                     urgent));
@@ -405,9 +417,10 @@ void StepGraph::run_with_messages(const GatePoll& gate) {
         for (int p = 0; p < P; ++p) {
             const auto k = static_cast<std::size_t>(e * P + p);
             const double t0 = clock_seconds();
+            const double cpu0 = thread_cpu_seconds();
             send_buf_[k].clear();
             halo_.data->pack(e, p, send_buf_[k]);
-            record(static_cast<std::size_t>(stage_count() * groups_) + k, -1, p, e, t0);
+            record(static_cast<std::size_t>(stage_count() * groups_) + k, -1, p, e, t0, cpu0);
             post_send(k, false);
         }
     }

@@ -40,13 +40,15 @@ void TraceRecorder::add_step(long step, const StepGraph& g,
             const std::string& stage = r.stage < static_cast<int>(stages_.size())
                                            ? stages_[static_cast<std::size_t>(r.stage)]
                                            : std::string("stage");
-            slice(stage, tid, r.start, r.end,
-                  fmt::format(R"("group":{},"step":{})", r.group, step));
+            slice(
+                stage, tid, r.start, r.end,
+                fmt::format(R"("group":{},"step":{},"cpu_us":{:.3f})", r.group, step, r.cpu * 1e6));
         } else {
             const std::string& ex = g.halo().exchanges[static_cast<std::size_t>(r.exchange)].name;
             slice(fmt::format("{} {}", r.stage == -1 ? "pack" : "unpack", ex), tid, r.start, r.end,
-                  fmt::format(R"("peer":{},"step":{})",
-                              g.halo().peers[static_cast<std::size_t>(r.group)], step));
+                  fmt::format(R"("peer":{},"step":{},"cpu_us":{:.3f})",
+                              g.halo().peers[static_cast<std::size_t>(r.group)], step,
+                              r.cpu * 1e6));
         }
     }
     auto message = [&](const MessageRecord& m) {

@@ -22,6 +22,8 @@ struct WiringStats {
     long unpack_early = 0;   // an unpack started before its message was reported
     long interior_early = 0; // interior tasks that started while a receive was outstanding
     long checked = 0;
+    long cpu_beyond_wall = 0; // a task whose thread CPU time exceeds its wall interval
+    double cpu = 0;           // thread CPU seconds of all tasks
 };
 
 void check_step(const tasks::StepGraph& g, WiringStats& st) {
@@ -30,6 +32,14 @@ void check_step(const tasks::StepGraph& g, WiringStats& st) {
     const int P = static_cast<int>(halo.peers.size());
     const std::size_t n = static_cast<std::size_t>(g.stage_count() * g.group_count());
     const std::size_t m = halo.exchanges.size() * static_cast<std::size_t>(P);
+    // A task runs on one thread: its CPU time lies within its wall interval (1 ms of slack
+    // for the two clocks' reads).
+    for (const tasks::TaskRecord& r : rec) {
+        if (r.end <= 0)
+            continue;
+        st.cpu_beyond_wall += (r.cpu < 0 || r.cpu > r.end - r.start + 1e-3) ? 1 : 0;
+        st.cpu += r.cpu;
+    }
     double last_arrival = 0;
     for (std::size_t e = 0; e < halo.exchanges.size(); ++e)
         for (int p = 0; p < P; ++p) {
@@ -83,6 +93,8 @@ TEST_CASE("boundary tasks wait for their messages; delays do not change results"
     CHECK(st.checked > 0);
     CHECK(st.violations == 0);
     CHECK(st.unpack_early == 0);
+    CHECK(st.cpu_beyond_wall == 0);
+    CHECK(st.cpu > 0);
     if (delayed.comm().rank() == 0) {
         REQUIRE(a.size() == b.size());
         CHECK(a.id == b.id);

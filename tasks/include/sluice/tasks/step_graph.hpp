@@ -71,12 +71,16 @@ struct HaloWiring {
 // Seconds on a clock shared by every rank of a node (steady clock, origin set once).
 double clock_seconds();
 void reset_clock_origin();
+// CPU seconds the calling thread has used (CLOCK_THREAD_CPUTIME_ID): a task's work, which its
+// wall interval overstates when more ranks and threads run than there are cores.
+double thread_cpu_seconds();
 
 // One task of the last run. stage >= 0: compute node of (stage, group); stage = -1: pack of
 // exchange `exchange` for peer `group`; stage = -2: unpack of it.
 struct TaskRecord {
     int stage = 0, group = 0, exchange = -1, thread = 0;
     double start = 0, end = 0;
+    double cpu = 0; // thread CPU seconds the task used (thread_cpu_seconds)
 };
 
 // One message of the last run (post to detected completion).
@@ -146,7 +150,7 @@ private:
     void run_with_messages(const GatePoll& gate);
     void open_gate(bool skip);
     [[nodiscard]] bool skipped(int stage) const;
-    void record(std::size_t slot, int stage, int group, int exchange, double t0);
+    void record(std::size_t slot, int stage, int group, int exchange, double t0, double cpu0);
     void guard(const std::function<void()>& f);
 
     struct Impl;
