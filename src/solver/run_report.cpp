@@ -56,6 +56,9 @@ std::vector<double> profile_numbers(const Simulation<D>& sim) {
     v.push_back(static_cast<double>(tasks::Comm::bytes_sent()));
     v.push_back(static_cast<double>(sim.owned()));
     v.push_back(pr.task_cpu);
+    v.push_back(pr.halo_pack_cpu);
+    for (std::size_t s = 0; s < pr.stage_busy.size(); ++s) // the stages' CPU, as stage_busy
+        v.push_back(s < pr.stage_cpu.size() ? pr.stage_cpu[s] : 0.0);
     return v;
 }
 
@@ -66,7 +69,7 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
     nlohmann::json ranks = nlohmann::json::array();
     std::vector<double> busy;
     double comm = 0, exposed = 0, bytes = 0, task_cpu = 0;
-    std::vector<double> stage_total(S, 0.0);
+    std::vector<double> stage_total(S, 0.0), stage_cpu_total(S, 0.0);
     if (print) {
         std::string head = "rank";
         for (const auto& s : stages)
@@ -83,7 +86,13 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
             stage_total[s] += v[s];
         }
         const double halo = v[S], b = v[S + 1], gw = v[S + 2], bw = v[S + 3], c = v[S + 4],
-                     x = v[S + 5], sent = v[S + 6], owned = v[S + 7], cpu = v[S + 8];
+                     x = v[S + 5], sent = v[S + 6], owned = v[S + 7], cpu = v[S + 8],
+                     halo_cpu = v[S + 9];
+        nlohmann::json st_cpu = nlohmann::json::object();
+        for (std::size_t s = 0; s < S; ++s) {
+            st_cpu[stages[s]] = v[S + 10 + s];
+            stage_cpu_total[s] += v[S + 10 + s];
+        }
         j["rank"] = r;
         j["stage_busy_seconds"] = st;
         j["halo_pack_seconds"] = halo;
@@ -91,6 +100,8 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
         // The tasks' thread CPU time: their work, which busy_seconds (wall intervals)
         // overstates when ranks x threads exceed the cores.
         j["task_cpu_seconds"] = cpu;
+        j["stage_task_cpu_seconds"] = st_cpu;
+        j["halo_pack_cpu_seconds"] = halo_cpu;
         j["graph_wall_seconds"] = gw;
         j["between_steps_wall_seconds"] = bw;
         j["communication_seconds"] = c;
@@ -121,6 +132,10 @@ nlohmann::json parallel_report(const std::vector<std::string>& stages,
         st[stages[s]] = stage_total[s];
     total["stage_busy_seconds"] = st;
     total["task_cpu_seconds"] = task_cpu;
+    nlohmann::json st_cpu = nlohmann::json::object();
+    for (std::size_t s = 0; s < S; ++s)
+        st_cpu[stages[s]] = stage_cpu_total[s];
+    total["stage_task_cpu_seconds"] = st_cpu;
     total["communication_seconds"] = comm;
     total["idle_waiting_for_messages_seconds"] = exposed;
     total["hidden_communication_seconds"] = comm - exposed;

@@ -61,6 +61,7 @@ double RankProfile::busy() const {
 
 void RankProfile::add_step(const StepGraph& g, const std::vector<MessageRecord>& between) {
     stage_busy.resize(static_cast<std::size_t>(g.stage_count()), 0.0);
+    stage_cpu.resize(stage_busy.size(), 0.0);
     std::vector<Interval> tasks, msgs;
     tasks.reserve(g.task_records().size());
     for (const TaskRecord& r : g.task_records()) {
@@ -68,10 +69,13 @@ void RankProfile::add_step(const StepGraph& g, const std::vector<MessageRecord>&
             continue;
         tasks.push_back({r.start, r.end});
         task_cpu += r.cpu;
-        if (r.stage >= 0)
+        if (r.stage >= 0) {
             stage_busy[static_cast<std::size_t>(r.stage)] += r.end - r.start;
-        else
+            stage_cpu[static_cast<std::size_t>(r.stage)] += r.cpu;
+        } else {
             halo_pack_busy += r.end - r.start;
+            halo_pack_cpu += r.cpu;
+        }
     }
     for (const MessageRecord& m : g.message_records())
         msgs.push_back({m.post, m.done});

@@ -29,6 +29,8 @@ struct RankProfile {
     std::vector<double> stage_busy; // seconds per stage, summed over groups and steps
     double halo_pack_busy = 0;      // packing and unpacking halo buffers
     double task_cpu = 0;            // thread CPU seconds of every task: the work done
+    std::vector<double> stage_cpu;  // ... of the compute tasks, per stage
+    double halo_pack_cpu = 0;       // ... of the packing and unpacking tasks
     double graph_wall = 0;          // wall time inside step graphs
     double between_wall = 0;        // wall time between graphs (rebin, migration, balance)
     double comm = 0;                // communication time C
