@@ -3,6 +3,8 @@
 
 #include "sluice/geometry/shape_particles.hpp"
 
+#include "vec_triple.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -27,10 +29,8 @@ ParticleId visit_mesh_wall_particles(const CaseConfig& cfg, int layers, Particle
     const double mass = cfg.rho0 * std::pow(cfg.dx, D);
     for (const WallMesh& m : cfg.meshes)
         visit_wall_sites(*m.shape, role_of(m), lattice_of(cfg, m), layers, [&](const WallSite& w) {
-            Vec<D> x;
-            for (int d = 0; d < D; ++d)
-                x[d] = Real(w.x[static_cast<std::size_t>(d)]);
-            sink({next_id++, Kind::wall, x, Vec<D>::Zero(), Real(cfg.rho0), Real(mass)});
+            sink({next_id++, Kind::wall, to_vec<D>(w.x), Vec<D>::Zero(), Real(cfg.rho0),
+                  Real(mass)});
         });
     return next_id;
 }

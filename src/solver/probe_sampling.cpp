@@ -4,6 +4,7 @@
 
 #include "particle_messages.hpp"
 #include "sluice/solver/mesh_walls.hpp"
+#include "vec_triple.hpp"
 
 #include "sluice/physics/initial_profiles.hpp"
 #include "sluice/physics/kernels.hpp"
@@ -198,10 +199,7 @@ void keep_walls_of_mesh(const Simulation<D>& sim, const Particles<D>& P, std::si
     const CaseConfig& cfg = sim.config();
     const int layers = wall_layers(sim.kernel_support(), cfg.dx);
     std::erase_if(walls, [&](std::size_t j) {
-        Triple x{};
-        for (int d = 0; d < D; ++d)
-            x[static_cast<std::size_t>(d)] = double(P.x[j][d]);
-        return !wall_particle_of_mesh(cfg, mesh, layers, x);
+        return !wall_particle_of_mesh(cfg, mesh, layers, to_triple<D>(P.x[j]));
     });
 }
 
@@ -212,10 +210,8 @@ Real mesh_sensor_reading(const Simulation<D>& sim, const Particles<D>& P,
                          const ProbeConfig& probe) {
     const CaseConfig& cfg = sim.config();
     OrientedSensorFace<D> face;
-    for (int d = 0; d < D; ++d) {
-        face.centre[d] = Real(probe.sensor_centre[static_cast<std::size_t>(d)]);
-        face.into_wall[d] = Real(probe.sensor_normal[static_cast<std::size_t>(d)]);
-    }
+    face.centre = to_vec<D>(probe.sensor_centre);
+    face.into_wall = to_vec<D>(probe.sensor_normal);
     face.diameter = Real(probe.diameter);
     const Real reach = face.diameter / 2 + sim.kernel_support();
     std::vector<std::size_t> walls = wall_particles_in(P, Vec<D>(face.centre.array() - reach),

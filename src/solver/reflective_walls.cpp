@@ -3,28 +3,14 @@
 
 #include "sluice/geometry/surface_index.hpp"
 
+#include "vec_triple.hpp"
+
 #include <algorithm>
 #include <string>
 
 namespace sluice {
 
 namespace {
-
-template <int D>
-Vec<D> to_vec(const Triple& t) {
-    Vec<D> v;
-    for (int d = 0; d < D; ++d)
-        v[d] = Real(t[static_cast<std::size_t>(d)]);
-    return v;
-}
-
-template <int D>
-Point3 to_point(const Vec<D>& v) {
-    Point3 p{};
-    for (int d = 0; d < D; ++d)
-        p[static_cast<std::size_t>(d)] = double(v[d]);
-    return p;
-}
 
 // A mesh's elements as reflective faces: the fluid is on the side their normals point to (a
 // surface's front, a solid's outside), so a move that enters an element from its front is
@@ -37,7 +23,7 @@ public:
     [[nodiscard]] std::optional<FaceEntry<D>> first_entry(const Vec<D>& a,
                                                           const Vec<D>& b) const override {
         const auto c =
-            shape_->first_crossing(to_point<D>(a), to_point<D>(b), CrossingSense::entering_front);
+            shape_->first_crossing(to_triple<D>(a), to_triple<D>(b), CrossingSense::entering_front);
         if (!c)
             return std::nullopt;
         return FaceEntry<D>{

@@ -11,6 +11,7 @@
 #include "schemes/projection/projection_scheme.hpp"
 #include "schemes/wcsph/wcsph_scheme.hpp"
 #include "step_scheme.hpp"
+#include "vec_triple.hpp"
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -26,18 +27,6 @@
 #include <stdexcept>
 
 namespace sluice {
-
-namespace {
-
-template <int D>
-Vec<D> to_vec(const Triple& t) {
-    Vec<D> v;
-    for (int d = 0; d < D; ++d)
-        v[d] = Real(t[d]);
-    return v;
-}
-
-} // namespace
 
 template <int D>
 std::unique_ptr<StepScheme<D>> Simulation<D>::make_scheme() {
