@@ -5,8 +5,9 @@
 #   core     include/sluice/core, src/core         sluice/core
 #   physics  include/sluice/physics, src/physics   sluice/core, sluice/physics
 #   geometry include/sluice/geometry, src/geometry sluice/core, sluice/geometry
+#   motion   include/sluice/motion, src/motion     sluice/core, sluice/motion
 #   io       include/sluice/io, src/io             sluice/core, sluice/physics, sluice/geometry,
-#                                                  sluice/io,
+#                                                  sluice/motion, sluice/io,
 #                                                  sluice/version.hpp (generated)
 #   tasks    tasks/                                sluice/core, sluice/tasks
 #   solver, app: anything.
@@ -24,15 +25,17 @@
 #    (the ctest `layers_check_refuses_bad_includes` runs it on tests/data/layers/).
 
 # The layers: name, folders (relative to the root), allowed include prefixes.
-set(SLUICE_LAYERS core physics geometry io tasks)
+set(SLUICE_LAYERS core physics geometry motion io tasks)
 set(SLUICE_LAYER_core_DIRS include/sluice/core src/core)
 set(SLUICE_LAYER_core_ALLOWED sluice/core/)
 set(SLUICE_LAYER_physics_DIRS include/sluice/physics src/physics)
 set(SLUICE_LAYER_physics_ALLOWED sluice/core/ sluice/physics/)
 set(SLUICE_LAYER_geometry_DIRS include/sluice/geometry src/geometry)
 set(SLUICE_LAYER_geometry_ALLOWED sluice/core/ sluice/geometry/)
+set(SLUICE_LAYER_motion_DIRS include/sluice/motion src/motion)
+set(SLUICE_LAYER_motion_ALLOWED sluice/core/ sluice/motion/)
 set(SLUICE_LAYER_io_DIRS include/sluice/io src/io)
-set(SLUICE_LAYER_io_ALLOWED sluice/core/ sluice/physics/ sluice/geometry/ sluice/io/ sluice/version.hpp)
+set(SLUICE_LAYER_io_ALLOWED sluice/core/ sluice/physics/ sluice/geometry/ sluice/motion/ sluice/io/ sluice/version.hpp)
 set(SLUICE_LAYER_tasks_DIRS tasks)
 set(SLUICE_LAYER_tasks_ALLOWED sluice/core/ sluice/tasks/)
 
@@ -42,6 +45,7 @@ set(SLUICE_NS_SHARED "sluice|sluice::(detail|case_file|h5)|detail|case_file|h5")
 set(SLUICE_LAYER_core_NAMESPACES "${SLUICE_NS_SHARED}")
 set(SLUICE_LAYER_physics_NAMESPACES "${SLUICE_NS_SHARED}")
 set(SLUICE_LAYER_geometry_NAMESPACES "${SLUICE_NS_SHARED}")
+set(SLUICE_LAYER_motion_NAMESPACES "${SLUICE_NS_SHARED}")
 set(SLUICE_LAYER_io_NAMESPACES "${SLUICE_NS_SHARED}")
 set(SLUICE_LAYER_tasks_NAMESPACES "sluice::tasks(::[a-z_]+)?|detail")
 
