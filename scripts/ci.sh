@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Everything CI runs (.ci/run), stage by stage, with the wall time of each:
-#   release    the README's test command (scripts/test.sh): every test, Release build;
+#   release    scripts/check_product_text.sh (a second: the documentation and comments speak of
+#              the software, not of how it was developed), then the README's test command
+#              (scripts/test.sh): every test, Release build;
 #   asan       AddressSanitizer + UndefinedBehaviorSanitizer: the unit tests listed in
 #              asan_unit_tests (reading, output, checkpoints, the task runtime), the MPI unit
 #              tests (halo exchange, migration on 3 ranks) and sluice's bad-input cli test;
@@ -49,7 +51,7 @@ tsan_full_targets=("${tsan_targets[@]}" test_thread_invariance test_halo_wiring 
 
 run_stage() {
     case "$1" in
-    release) bash scripts/test.sh ;;
+    release) bash scripts/check_product_text.sh && bash scripts/test.sh ;;
     asan)
         bash scripts/setup.sh asan sluice "${asan_unit_tests[@]}" &&
             ctest --preset asan -R "$asan_tests"
