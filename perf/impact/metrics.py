@@ -15,7 +15,7 @@ NEGATIVE_FRACTION = -0.5     # "below -0.5 rho g H"
 DEFAULT_WINDOW_STAR = 0.5    # first-impact window length in t* units
 DEFAULT_FILTER_S = 1.0e-3    # moving-average width in seconds
 DEFAULT_SMOOTH_S = 10.0e-3   # the second, longer average: WCSPH's peaks after it do not depend
-                             # on c0 (docs/IMPACT_LOADS.md, "The sound-speed ladder")
+                             # on c0 (perf/impact/STUDY.md, "The sound-speed ladder")
 
 
 @dataclass

@@ -159,7 +159,7 @@ def impact_pressure(out_dir: Path, case: dict) -> float:
     sc = metrics.Scales(H=case["blocks"][0]["hi"][1] - case["blocks"][0]["lo"][1],
                         g=abs(case["fluid"]["gravity"][-1]), rho0=case["fluid"]["rho0"])
     # The wall panel at P1 (force on the 2 cm strip 0.15-0.17 m / 0.02 m): the load the wall
-    # carries, which spray cannot fake (docs/IMPACT_LOADS.md, "Read as wall loads").
+    # carries, which spray cannot fake (perf/impact/STUDY.md, "Read as wall loads").
     import numpy as np  # noqa: PLC0415
 
     panel = out_dir / "probes" / "P1_panel.csv"
