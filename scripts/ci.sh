@@ -15,8 +15,8 @@
 #   fuzz       the case-reader fuzzer for 30 s and the shape-reader fuzzer for a third of that
 #              (scripts/fuzz.sh; seconds: SLUICE_FUZZ_SECONDS),
 #              built from the case reader's and the case checks' sources only.
-# The *-full stages did not fit CI's 30 minutes (the numbers and the reason: README,
-# "Continuous integration"); run them with `bash scripts/ci.sh asan-full tsan-full`.
+# The *-full stages did not fit CI's 30 minutes (the numbers and the reason: perf/README.md,
+# "CI stage times"); run them with `bash scripts/ci.sh asan-full tsan-full`.
 #
 # ThreadSanitizer: Debian's oneTBB is not built with -fsanitize=thread, so the step graph tells
 # TSan its declared dependency edges itself (tasks/src/tsan_sync.hpp); TSan then checks that
