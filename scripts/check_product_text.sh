@@ -23,6 +23,7 @@ patterns=(
     '\bheld[- ]back (data|set|cases?|results?|runs?|measurements?)\b' # "held-back data"
     '\b[Ss]eeds? ?0{1,2}[0-9]\b'        # "seed 004", "seed 000's box": cite the paper instead
     '\b[Ss]eed[- ]0{1,2}[0-9]\b'        # "seed-000 run"
+    '\b[Tt]he seed\b|\bseed (eqs?\.|§|section)|(?<!\$)\bseed$' # "the seed's text", "seed eq. 12", "seed" + newline + "004"
     '\bthis branch\b'                   # "this branch's binary": name the commit
     '\bworktree\b'                      # "built in this worktree"
     '\bother engineers\b'               # the machine's other users

@@ -3,8 +3,8 @@
 # 2 threads to 0.3 s, and 2 ranks to 0.2 s) and the 3-D peer case
 # (perf/cases/dam_break_3d_obstacle.toml with snapshots, to 0.03 s) with each binary and compares
 # every snapshot (.h5) and probe file (.csv) with cmp. This is the check a change that must not
-# alter results (a refactor, a faster loop) is held to: issue 20's "byte-identical before and
-# after". Prints one line per run and exits 1 if any file differs or is missing.
+# alter results (a refactor, a faster loop) is held to: byte-identical outputs before and
+# after. Prints one line per run and exits 1 if any file differs or is missing.
 # Usage: scripts/same_outputs.sh SLUICE_BEFORE SLUICE_AFTER [WORK_DIR]
 set -uo pipefail
 [[ $# -ge 2 ]] || { echo "usage: $0 SLUICE_BEFORE SLUICE_AFTER [WORK_DIR]" >&2; exit 2; }

@@ -78,7 +78,7 @@ void convex_hull_3d_into(std::span<const Vec<3>> points, HullPoints which, Quick
     hull.points.clear();
     hull.facets.clear();
     hull.dimension = -1;
-    // The usual case (issue 22): a solid set, its hull without sorting or decomposing it.
+    // The usual case: a solid set, its hull without sorting or decomposing it.
     if (points.size() >= 4 && quickhull_3d(points, clearly_3d_volume(points), work, hull.points,
                                            hull.facets, octahedron)) {
         hull.dimension = 3;

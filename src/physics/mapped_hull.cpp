@@ -32,7 +32,7 @@ struct Extremes {
         add_directions(q, i);
     }
     // Selects, not branches: which image is a new extreme is random, and a mispredicted
-    // branch costs more than the selects (issue 22, sixth pass).
+    // branch costs more than the selects.
     void add_directions(const Vec<D>& q, int i) {
         for (int a = 0; a < D; ++a) {
             const auto up = static_cast<std::size_t>(2 * a);
@@ -63,8 +63,8 @@ Extremes<D> extreme_images(std::span<const Vec<D>> p) {
 // One image can be the extreme of two half-axes (a particle at a surface: its in-plane
 // neighbour with the lowest image z is also the one farthest along x). The facets with a
 // repeated corner are then segments or points: the surface is the octahedron (diamond) with
-// that edge contracted, still closed, and the argument holds for the rest of its facets
-// (issue 22, fifth pass). Such a facet has n = 0 and h = +max: no test ever fails on it.
+// that edge contracted, still closed, and the argument holds for the rest of its facets.
+// Such a facet has n = 0 and h = +max: no test ever fails on it.
 template <int D>
 struct StarSurface {
     static constexpr int kFacets = D == 2 ? 4 : 8;
@@ -217,7 +217,7 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         // surface is not star-shaped about it, or barely (rho tiny), and nothing was dropped
         // (quickhull then got ~67 images, not ~21: a quarter of the bench's 3-D particles).
         // The argument holds about any point, so try the extremes' centroid (inside their
-        // hull) instead (issue 22, fifth pass). Interior particles keep the origin: q - 0 is
+        // hull) instead. Interior particles keep the origin: q - 0 is
         // q exactly, so their drop decisions are unchanged.
         Vec<D> centre = Vec<D>::Zero();
         if (!(star.rho > 0 && kDropMargin * star.rho > 1e3 * tol) &&
@@ -233,7 +233,7 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         // Inside conv(e) by more than the margin (convex surface only): below every facet
         // plane by the margin. All 8 (4) planes at once as vector lanes, the same sums as
         // n.dot(q) - h; the largest excess decides (no early exit, whose branch would
-        // mispredict: issue 22, sixth pass).
+        // mispredict).
         const auto deep_inside = [&](const Vec<D>& q) {
             if (!star.convex)
                 return false;
@@ -250,7 +250,7 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
         if (rho > 0 && margin > 1e3 * tol) {
             // Without a branch on the outcome (random: about half the images go either way):
             // both tests always, the kept index and image always written at the end of the
-            // kept list, which only grows when the image is kept (issue 22, sixth pass).
+            // kept list, which only grows when the image is kept.
             const std::size_t count = h.images.size();
             kept.resize(count);
             kept_images.resize(count);
@@ -290,7 +290,7 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
                 k = kept[static_cast<std::size_t>(k)];
     };
     // Each corner's image lies on a facet the hull knows (an edge it starts; a live facet
-    // quickhull recorded for it): the boundary test tries that facet first (issue 22).
+    // quickhull recorded for it): the boundary test tries that facet first.
     std::vector<int>& on_facet = work.on_facet;
     on_facet.resize(h.images.size());
     const auto mark_corner = [&](int i, int facet) {
@@ -343,15 +343,15 @@ void hull_of_images(Extremes<D> extremes, HullPrefilter prefilter, bool with_bou
     // Points within the tolerance of a facet join the corners. Duplicates of a corner (same
     // image) are on the boundary too. An image nearer the origin than every facet's plane by
     // more than the tolerance (|r'| < min(-d) - 2 tol: n.r' + d <= |r'| + d < -tol, with a
-    // tolerance's margin for rounding) is on none; the test skips it (issue 22).
+    // tolerance's margin for rounding) is on none; the test skips it.
     Real inner = std::numeric_limits<Real>::max();
     for (const auto& f : h.facets)
         inner = std::min(inner, -f[D]);
     const Real skip = inner - 2 * tol;
     const Real skip2 = skip > 0 ? skip * skip : Real(-1);
     // Whether some facet holds the image: the same answer whichever facet is tried first, so
-    // all are tried at once, as vector lanes over the facets by component (issue 22, sixth
-    // pass: an image inside the hull scans every facet), with the sums of
+    // all are tried at once, as vector lanes over the facets by component (an
+    // image inside the hull scans every facet), with the sums of
     // f.head(D).dot(q) + f[D]; the largest of them decides.
     std::array<Eigen::Array<Real, Eigen::Dynamic, 1>, D + 1>& by_axis = work.facet_components;
     const auto facet_count = static_cast<Eigen::Index>(h.facets.size());
@@ -408,7 +408,7 @@ void mapped_hull_within_into(std::span<const Vec<D>> offsets, Real radius2, Hull
                              bool with_boundary) {
     // One pass: the candidates, their images and the images' extremes.
     // Written through pointers into buffers sized for every offset, then cut to the count
-    // (no capacity check per candidate; issue 22, sixth pass).
+    // (no capacity check per candidate).
     candidate.resize(offsets.size());
     h.images.resize(offsets.size());
     int* const cand = candidate.data();

@@ -33,7 +33,7 @@ struct Hull {
     // Exact: q strictly above the plane of facet k. The rounded distance to the facet's
     // plane decides first when it is farther from zero than the facet's guard, a bound on its
     // error (add_facet); only the rest go to the exact predicate, so every answer is the
-    // predicate's (issue 22, sixth pass: the predicate's filter was 15 % of quickhull).
+    // predicate's (the predicate's filter was 15 % of quickhull).
     bool above(int k, int q) {
         const Facet& F = f(k);
         const Real dist = (F.n.dot(at(q)) + F.d) * F.area2;
@@ -209,7 +209,7 @@ struct Hull {
             const int u = F.v[static_cast<std::size_t>((k + 1) % 3)];
             const Facet& H = f(h);
             // H's corner that is neither v nor u (both are corners of H, distinct): the sum of
-            // its three less theirs, without a branch per corner (issue 22, fifth pass).
+            // its three less theirs, without a branch per corner.
             const int apex = H.v[0] + H.v[1] + H.v[2] - v - u;
             if (F.n.dot(at(apex)) + F.d < -eps)
                 ++turns;

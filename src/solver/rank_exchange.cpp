@@ -13,8 +13,8 @@ namespace sluice {
 
 template <int D>
 void RankExchange<D>::find_peers() {
-    // From the cells of this rank's range and its peers' ranges only, not the whole grid
-    // (issue 21): the other ranks' lists stay empty, two_step_ranks reads none of them.
+    // From the cells of this rank's range and its peers' ranges only, not the whole grid:
+    // the other ranks' lists stay empty, two_step_ranks reads none of them.
     std::vector<std::vector<int>> known(static_cast<std::size_t>(layout_.ranks()));
     peers_ = known[static_cast<std::size_t>(comm_.rank())] =
         tasks::peers_of(grid_, layout_, comm_.rank());

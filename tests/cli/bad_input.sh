@@ -123,7 +123,7 @@ done
 cp valid.toml override.toml
 expect_refused override "numerics.kernal" --set numerics.kernal=quintic
 
-# Issue 19's instruments: `sluice run` refuses them before writing anything.
+# The wall-load instruments (force probes, area sensors, every_step, directed fronts): `sluice run` refuses them before writing anything.
 walls='[walls]\nmodel = "dummy"\ntank_lo = [0, 0]\ntank_hi = [1.5, 1]\ntank_faces = ["x-", "x+", "y-"]\n'
 probe() { printf "$walls\n[[probes]]\nname = \"p\"\n%b\n" "$1" | cat valid.toml - >"$2.toml"; }
 probe 'type = "force"\nface = "x+"\nhi = [1.0, 1.0]' force_off_wall

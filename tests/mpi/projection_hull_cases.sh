@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every shipped case (cases/*.toml) with numerics.scheme = "projection" and convex-hull
-# neighbours for each operator ([neighbours.*], issue 22) runs to its (shortened) end on 1 and
+# neighbours for each operator ([neighbours.*]) runs to its (shortened) end on 1 and
 # 3 ranks at coarse resolution, and the runs agree as the projection scheme's do with radius
 # neighbours (tests/mpi/projection_rank_invariance.sh): per particle (matched by id) positions
 # within 1e-9 m and pressure within 1e-6 of rho0 |g| H (H = the domain's height), the solver's

@@ -1,4 +1,4 @@
-// The convex-hull neighbour selection as it was at 0f22f9e, before issue 22's rewrite (Qhull in
+// The convex-hull neighbour selection as it was at commit 0f22f9e, before its rewrite (Qhull in
 // 3-D, allocating 2-D hull): the reference the new selection must reproduce exactly
 // (tests/unit/test_hull_selection_reference.cpp, test_quickhull_3d.cpp). Frozen: the code below
 // is the old sources with their public names prefixed old_; do not change it.
@@ -292,7 +292,7 @@ std::FILE* quiet_stream() {
     return f;
 }
 
-// One Qhull instance per thread, reused from call to call (issue 22): qh_freeqhull(!qh_ALL)
+// One Qhull instance per thread, reused from call to call: qh_freeqhull(!qh_ALL)
 // keeps Qhull's short-memory pools, so a call after the first skips their set-up and most of
 // its allocations. Calls in different threads never share it.
 class QhullInstance {

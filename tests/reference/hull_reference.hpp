@@ -1,6 +1,6 @@
 #pragma once
-// The convex-hull neighbour selection as it was at commit 0f22f9e, before issue 22 replaced
-// Qhull with the exact quickhull and reused the 2-D hull's buffers: the reference the new code
+// The convex-hull neighbour selection as it was at commit 0f22f9e, before the exact quickhull
+// replaced Qhull and the 2-D hull came to reuse its buffers: the reference the new code
 // must reproduce exactly. Test-only (links Qhull); frozen copy of the old sources, public
 // names prefixed old_.
 #include "sluice/core/types.hpp"

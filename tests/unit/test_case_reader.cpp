@@ -519,7 +519,7 @@ end_time = 0.5
               .shape == BlockShape::ellipse);
 }
 
-TEST_CASE("issue 19 instruments: force, area sensor, every_step, directed front") {
+TEST_CASE("wall-load instruments: force, area sensor, every_step, directed front") {
     const std::string probes = R"(
 [[probes]]
 name = "front"

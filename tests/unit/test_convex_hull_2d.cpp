@@ -1,4 +1,4 @@
-// Lee & Lee's quadrant + Sklansky hull (seed 003) against Andrew's monotone chain on many random
+// Lee & Lee's (2011) quadrant + Sklansky hull against Andrew's monotone chain on many random
 // and adversarial sets, and both against an independent check of the hull property with the
 // exact predicate: every point inside or on the polygon, every corner a strict turn.
 #include "sluice/physics/convex_hull_2d.hpp"

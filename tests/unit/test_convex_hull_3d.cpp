@@ -1,4 +1,4 @@
-// The 3-D hull (convex_hull_3d: the exact quickhull since issue 22) against a brute-force
+// The 3-D hull (convex_hull_3d: the exact quickhull) against a brute-force
 // facet search: every plane through three points with all points on one side is a supporting
 // plane, and the 2-D hull corners of the points on it are hull vertices (O(n^4)). Degenerate inputs
 // (fewer than 4 points, duplicates, coplanar and collinear sets) must give their lower-dimensional

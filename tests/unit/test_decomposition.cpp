@@ -33,7 +33,7 @@ TEST_CASE("target_group_count: the size target, or 8 groups per thread for small
     // The 232k strong-scaling case: the size target (2,000 particles) decides.
     CHECK(target_group_count(232128, 2000, 1) == 117);
     CHECK(target_group_count(232128, 2000, 2) == 117);
-    // Seed 000's box (6,859 particles): 4 groups by size; 8 per thread on 2 threads; one thread
+    // Tak's (2024) box (6,859 particles): 4 groups by size; 8 per thread on 2 threads; one thread
     // keeps the old floor of 4.
     CHECK(target_group_count(6859, 2000, 1) == 4);
     CHECK(target_group_count(6859, 2000, 2) == 16);

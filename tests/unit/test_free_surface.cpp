@@ -16,7 +16,7 @@ using namespace sluice;
 namespace {
 
 constexpr Real l0 = 0.1;
-constexpr Real diameter = 2.1 * l0; // seed 004
+constexpr Real diameter = 2.1 * l0; // Park et al. (2014)
 
 template <int D>
 std::vector<bool> surface_flags(const std::vector<Vec<D>>& x) {

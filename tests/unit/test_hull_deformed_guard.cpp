@@ -1,4 +1,4 @@
-// Where convex-hull neighbours must help the projection scheme's operators (issue 22), with
+// Where convex-hull neighbours must help the projection scheme's operators, with
 // the solver's settings (candidates = the particles within re = 3.1 dx; the function its
 // stencil stage calls): on a jittered block carried by a shear flow (strain 2) or stretched
 // 4:1, the WMLS gradient over the hull neighbours (the nearest particle in each direction)

@@ -1,4 +1,4 @@
-// The prefilter of the mapped hull (issue 22, mapped_hull.hpp: HullPrefilter): the ball it
+// The prefilter of the mapped hull (mapped_hull.hpp: HullPrefilter): the ball it
 // finds lies inside the hull of the images, and dropping the images inside it changes neither
 // the corners nor the boundary points, on exact and jittered lattices, deformed lattices and
 // one-sided (free-surface) sets, in 2-D and 3-D.

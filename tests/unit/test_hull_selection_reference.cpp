@@ -1,4 +1,4 @@
-// Issue 22: the rewritten convex-hull selection (exact quickhull in 3-D, reused buffers in 2-D)
+// The rewritten convex-hull selection (exact quickhull in 3-D, reused buffers in 2-D)
 // selects exactly the neighbours the old one (tests/reference: Qhull in 3-D) selected, in the
 // same order, for every policy variant, on random sets, jittered lattices from strong jitter
 // down to rounding-level displacements, exact lattices (offsets x_j - x_i of rounded lattice

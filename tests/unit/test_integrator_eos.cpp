@@ -55,12 +55,12 @@ TEST_CASE("EOS: linear and Tait are inverted exactly and give p = p_b at rho0") 
     CHECK(lin.pressure(1001.0) == doctest::Approx(350.0 * 350.0));
 }
 
-TEST_CASE("Time-step limits: the seed 000 3-D case at c = 350 m/s needs about 7 microseconds") {
+TEST_CASE("Time-step limits: the Tak (2024) 3-D case at c = 350 m/s needs about 7 microseconds") {
     TimeStepParams prm{0.01, 0.001 / 1000, 0.25, 0.125, 0.25};
     const auto l = particle_time_step(prm, 350.0, 0.0, 9.81);
     CHECK(l.acoustic == doctest::Approx(7.14e-6).epsilon(1e-2));
     CHECK(l.min() == l.acoustic);
-    CHECK(l.min() < 1e-3); // the seed's own dt = 1 ms is far above it
+    CHECK(l.min() < 1e-3); // Tak's (2024) own dt = 1 ms is far above it
 }
 
 TEST_CASE("Time-step limits from the extremes equal the min over the particles, bit for bit") {

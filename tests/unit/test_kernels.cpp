@@ -1,5 +1,5 @@
 // Kernel normalisation (integral of W over space = 1) and derivative (against central
-// finite differences), for every kernel in 1-D, 2-D and 3-D. This is where the seed's
+// finite differences), for every kernel in 1-D, 2-D and 3-D. This is where Tak's (2024)
 // printed constants are checked: its 1-D "120/h" must be 1/(120h).
 #include "sluice/physics/kernels.hpp"
 
@@ -60,14 +60,14 @@ TEST_CASE("Morris quintic spline: normalisation and gradient in 1-D, 2-D, 3-D") 
     }
 }
 
-TEST_CASE("The seed's printed quintic constants: 1-D 120/h is meant as 1/(120h); 3-D is off") {
+TEST_CASE("Tak's (2024) printed quintic constants: 1-D 120/h is meant as 1/(120h); 3-D is off") {
     const double h = 0.5;
     QuinticKernel<1> k(h);
     CHECK(k.sigma == doctest::Approx(1 / (120 * h)));
     QuinticKernel<1> printed(h);
     printed.sigma = 120 / h;
     CHECK(integral<1>(printed) > 1e3);
-    // The 2-D constant as printed in seed 000 is right.
+    // The 2-D constant as printed in Tak (2024) is right.
     CHECK(QuinticKernel<2>(h).sigma == doctest::Approx(7 / (478 * std::numbers::pi * h * h)));
     // The printed 3-D constant 3/(359 pi h^3) over-normalises by 0.28 %; 1/(120 pi h^3) is exact.
     QuinticKernel<3> printed3(h);

@@ -144,8 +144,8 @@ TEST_CASE("projection: one step of still water gives the hydrostatic field, 2-D 
     check_hydrostatic_step<2>("sor", 1.2, "", nullptr, &rec);
     CHECK_FALSE(rec.relaxation_dropped);
 }
-TEST_CASE("projection: SOR at the seed's 1.5 goes on with relaxation 1 where it would diverge") {
-    // The seed's 1.5 diverges here: this tank's cell groups hold ~25 particles, so the hybrid
+TEST_CASE("projection: SOR at the paper's 1.5 goes on with relaxation 1 where it would diverge") {
+    // The paper's 1.5 diverges here: this tank's cell groups hold ~25 particles, so the hybrid
     // sweep is mostly Jacobi across groups (docs/PROJECTION.md, "SOR"). The solve restarts
     // from its starting iterate with relaxation 1 and reaches the exact field.
     PressureSolveRecord rec;

@@ -1,5 +1,5 @@
 // The exact 3-D orientation predicate against integer arithmetic, and the quickhull
-// (convex_hull_3d, issue 22) against Qhull (the old implementation, tests/reference): the same
+// (convex_hull_3d) against Qhull (the old implementation, tests/reference): the same
 // vertex set on random, lattice and degenerate sets, and the same answer for a point raised
 // above a facet by any height outside Qhull's own rounding band.
 #include "sluice/physics/convex_hull_3d.hpp"

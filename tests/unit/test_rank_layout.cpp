@@ -207,7 +207,7 @@ void check_range_walk(const CellGrid<D>& g, unsigned seed) {
 } // namespace
 
 TEST_CASE("peers from each rank's own cells agree with a scan of the whole grid") {
-    // Issue 21: peers_of walks the rank's key range through the Morton tree, not the grid.
+    // peers_of walks the rank's key range through the Morton tree, not the grid.
     check_range_walk(CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(13, 7), 1.0, {false, false}), 1);
     check_range_walk(CellGrid<2>::make(Vec<2>(0, 0), Vec<2>(29, 3), 1.0, {true, false}), 2);
     check_range_walk(CellGrid<3>::make(Vec<3>(0, 0, 0), Vec<3>(7, 5, 9), 1.0, {false, true, false}),

@@ -1,6 +1,6 @@
 #pragma once
 // Operator error and stencil quality of the projection scheme's WMLS operators with radius
-// against convex-hull neighbours on particle sets deformed by motion (issue 22), through the
+// against convex-hull neighbours on particle sets deformed by motion, through the
 // function the solver's stencil stage calls (physics/selected_operators.hpp) with the
 // solver's settings: re = 3.1 dx, PNU-MPS weight, candidates = the particles within re.
 // Shared by tests/unit/test_hull_deformed_guard.cpp and perf/convex_hull/bench_hull_deformed.cpp.
@@ -14,7 +14,7 @@
 // Sets taken from a run (the dam break's jet and splash) come from the benchmark.
 //
 // Field f = sin(x/L) cos(y/L), L = 10 dx: grad f and lap f = -2 f / L^2 exact. Errors, relative
-// L2 over the scored particles (seed 004's form): E = sqrt(sum |q - q_exact|^2 / sum |q_exact|^2).
+// L2 over the scored particles (Park et al.'s (2014) form): E = sqrt(sum |q - q_exact|^2 / sum |q_exact|^2).
 // Stencil quality (the pressure rows P4 are built from L_ij): `not ok` counts fits not exact
 // for quadratics (those rows become surface rows in the solver); `|L|/L` is
 // sum_j |L_ij| / sum_j L_ij, 1 when every Laplacian coefficient is positive (an M-matrix row)

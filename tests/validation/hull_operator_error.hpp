@@ -1,20 +1,20 @@
 #pragma once
 // WMLS operator error with convex-hull neighbours against radius neighbours on strongly
-// anisotropic particle sets (issue 5; the situations where Lee & Lee, seed 003, and Randles &
+// anisotropic particle sets (the situations where Lee & Lee (2011) and Randles &
 // Libersky 2000 say the radius search picks poor neighbours). Shared by
 // tests/validation/test_hull_operator_error.cpp and perf/convex_hull/bench_hull_operator_error.cpp.
 //
-// Sets, on about [0.8, 4.1]^2 like seed 004's operator benchmark (l0 = 0.1), every coordinate
+// Sets, on about [0.8, 4.1]^2 like Park et al.'s (2014) operator benchmark (l0 = 0.1), every coordinate
 // displaced by 10 % of the local spacing (seeded) so that nothing is exactly degenerate:
 //   stretched : a square lattice stretched 4:1, spacing 4 l0 along x and l0 along y;
 //   sheared   : the same lattice sheared, row j shifted by 1.3 l0 j along x;
 //   gap       : a square lattice of spacing l0 with 3 columns removed (a gap 4 l0 wide between
 //               the particles on either side); only the particles beside the gap are scored.
 // Field f = sin(x) cos(y) (grad f = (cos x cos y, -sin x sin y), lap f = -2 f). Error:
-// E = sqrt(sum |q - q_exact|^2 / sum |q_exact|^2) over the scored particles (seed 004's form).
+// E = sqrt(sum |q - q_exact|^2 / sum |q_exact|^2) over the scored particles (Park et al.'s (2014) form).
 //
 // Neighbour sets, all fitted by WMLS with the PNU-MPS weight:
-//   radius      : every particle within re = 3.1 l0 (seed 004's setting), fit radius re;
+//   radius      : every particle within re = 3.1 l0 (Park et al.'s (2014) setting), fit radius re;
 //   radius-wide : every particle within 1.1 rc (rc = 5 l0, the hull's candidate radius), fit
 //                 radius 1.1 rc: the same reach as the hull variant;
 //   hull+radius : convex-hull selection among the candidates within rc (corners and edge

@@ -1,11 +1,11 @@
 #pragma once
-// Accuracy of the particle operators (WMLS, MPS, SPH) on seed 004's benchmark (Park et al.
-// 2014, section 3.1): a square lattice on [lo, hi]^2 of spacing l0, every coordinate displaced
+// Accuracy of the particle operators (WMLS, MPS, SPH) on Park et al.'s (2014) benchmark (
+// section 3.1): a square lattice on [lo, hi]^2 of spacing l0, every coordinate displaced
 // by randomness * l0 * U(-1, 1) (randomness 0.5: up to half a spacing), neighbours within
 // re = 3.1 l0, test field f = sin(x) cos(y); the same in 3-D on a cube with f = sin x cos y cos z.
 // Shared by tests/validation/test_wmls_benchmark.cpp and perf/wmls/operator_accuracy.cpp.
 //
-// Relative error (seed eq. 23 is missing from the text; this is the usual discrete L2 form):
+// Relative error (paper eq. 23 is missing from the text; this is the usual discrete L2 form):
 //   E = sqrt(sum_i |q_i - q_exact(x_i)|^2) / sqrt(sum_i |q_exact(x_i)|^2)
 // over the particles evaluated, q = grad f (vector norm) or lap f.
 #include "sluice/physics/particle_operators.hpp"
@@ -19,7 +19,7 @@
 namespace sluice::testing {
 
 struct OperatorBenchmark {
-    Real lo = 0.8, hi = 4.1; // domain of seed 004, Fig. 3
+    Real lo = 0.8, hi = 4.1; // domain of Park et al. (2014), Fig. 3
     Real l0 = 0.1;
     Real re_over_l0 = 3.1;
     Real randomness = 0.5;

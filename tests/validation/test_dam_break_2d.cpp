@@ -65,12 +65,12 @@ TEST_CASE("Dam break surge front follows Martin & Moyce (n^2 = 2)") {
     CHECK(rms_mps < 0.05);
     std::printf(
         "dam break: RMS relative deviation from Martin & Moyce (T <= 3, %d points) = %.2f %% "
-        "(issue target 10 %%, regression guard 15 %%), %ld steps\n",
+        "(target 10 %%, regression guard 15 %%), %ld steps\n",
         n, 100 * rms, sim.steps());
     CHECK(rms < 0.15);
     const FrontDeviation bulk =
         front_deviation(Ts, Zs_bulk, data_path("martin_moyce_1952_n2_2.csv"), -1.0, 3.0, "");
-    std::printf("dam break: the bulk-only front (before issue 19) deviates %.2f %% RMS from "
+    std::printf("dam break: the bulk-only front (the front probe before commit 5facdf5) deviates %.2f %% RMS from "
                 "Martin & Moyce\n",
                 100 * bulk.rms);
 }

@@ -1,4 +1,4 @@
-// Seed 000's 3-D case (cases/debris_box_3d.toml: 0.25 m fluid cube dropped from 0.05 m in a
+// Tak's (2024) 3-D case (cases/debris_box_3d.toml: 0.25 m fluid cube dropped from 0.05 m in a
 // 1 m tank, c = 350 m/s, h = 0.01 m) for 0.025 s (about 3,500 steps) with the time step the
 // solver computes: no NaN or escaped particle (the solver throws RunError), mass conserved
 // exactly, every particle inside the reflective tank, and the block in free fall as a whole.
@@ -14,12 +14,12 @@
 using namespace sluice;
 using namespace sluice::testing;
 
-TEST_CASE("Seed 000 debris box: 0.025 s in 3-D without NaN, mass exact") {
+TEST_CASE("Tak (2024) debris box: 0.025 s in 3-D without NaN, mass exact") {
     const CaseConfig cfg = read_case(case_path("debris_box_3d.toml"), {"time.end_time=0.025"});
     Simulation<3> sim(cfg);
     const auto& P = sim.particles();
     REQUIRE(P.count(Kind::fluid) == 19 * 19 * 19);
-    CHECK(sim.dt() < 1e-5); // c = 350 m/s, h = 0.01 m: the seed's 1 ms is far too large
+    CHECK(sim.dt() < 1e-5); // c = 350 m/s, h = 0.01 m: Tak's (2024) 1 ms is far too large
     const double mass0 = P.total_mass();
     double z0 = 0;
     for (std::size_t i = 0; i < P.size(); ++i)

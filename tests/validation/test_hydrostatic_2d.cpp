@@ -1,4 +1,4 @@
-// Still water (cases/hydrostatic_2d.toml, seed 004's 0.4 m x 0.4 m tank): from 1 s to 5 s
+// Still water (cases/hydrostatic_2d.toml, Park et al.'s (2014) 0.4 m x 0.4 m tank): from 1 s to 5 s
 // the bottom-centre probe stays within 2 % of rho0 g (H - y_probe), the density of every
 // particle stays within 1 % of its hydrostatic value, and no fluid particle crosses a wall.
 #include "sluice/physics/probes.hpp"

@@ -1,4 +1,4 @@
-// Seed 004's 2-D dam break with the projection scheme (cases/projection_dam_break_2d.toml) at
+// Park et al.'s (2014) 2-D dam break with the projection scheme (cases/projection_dam_break_2d.toml) at
 // a coarse resolution (dx = 0.02 m, 800 fluid particles, dt = 0.4 ms: the case's dt scaled
 // with dx; the case's 0.01 m run to 1 s and the comparison with WCSPH are
 // perf/projection/dam_break_compare.py). The run goes to 0.8 s, past the 0.66 s at which the

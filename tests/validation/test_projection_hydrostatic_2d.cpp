@@ -1,4 +1,4 @@
-// Still water with the projection scheme (cases/projection_hydrostatic_2d.toml, seed 004's
+// Still water with the projection scheme (cases/projection_hydrostatic_2d.toml, Park et al.'s (2014)
 // 0.4 m x 0.4 m tank, 1,600 particles). Shortened to 1.5 s for the test suite (the full 5 s
 // run and the comparison with WCSPH are perf/projection/hydrostatic_noise.sh): from 0.5 s on
 // the mean of the bottom-centre probe is within 2 % of rho0 g (H - y_probe) and its temporal

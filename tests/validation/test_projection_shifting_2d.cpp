@@ -7,8 +7,8 @@
 // The full-resolution figures are in perf/projection/README.md. The Jacobi preconditioner is
 // named, as when the guard was first calibrated (a single 1 s window of 100 samples at this
 // resolution moves with the solver's rounding).
-// Since session 30 (the hydrostatic reference of P7 and the smooth weight of P3, the defaults)
-// the runs gave 14.9 Pa without and 1.96 Pa with shifting (13.7 and 1.96 Pa in session 43),
+// Since 2026-11-26 (the hydrostatic reference of P7 and the smooth weight of P3, the defaults)
+// the runs gave 14.9 Pa without and 1.96 Pa with shifting (13.7 and 1.96 Pa on 2026-11-28),
 // means -3.50 % and -3.63 %: the free surface's p = 0 sits on the top particles' centres, half a
 // spacing below the water's surface, which costs rho0 g dx/2 = 2.6 % of the probe's pressure at
 // this dx; before, with the minimum

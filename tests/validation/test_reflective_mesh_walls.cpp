@@ -1,4 +1,4 @@
-// Seed 000's debris box with its tank as the seed builds it, 12 reflective triangles
+// Tak's (2024) debris box with its tank as the paper builds it, 12 reflective triangles
 // (cases/debris_box_mesh_3d.toml, meshes/debris_tank_3d.stl), against the same tank as six
 // reflective planes (cases/debris_box_3d.toml): the block falls, hits the floor and spreads to
 // the walls, and the two runs agree particle for particle at every step. The mesh's vertices

@@ -18,7 +18,7 @@
 // balance holds less tightly than WCSPH's. Measured (317 steps to 0.3 s, x-momentum +10 to
 // +0.15 kg m/s per m, the wall collision along the wall's normal): the wall's impulse 9.53 N s/m,
 // of which the collisions 1.23, is 3.2 % short of the momentum change; the pressure alone would
-// be 16 % short. (Along the line of centres, before session 39: 306 steps, 9.85 N s/m, of
+// be 16 % short. (Along the line of centres, before 2026-11-28: 306 steps, 9.85 N s/m, of
 // which 1.54, 2.9 % short.) The collisions alone (reading = "collisions"): the force probe's
 // impulse is the step's 1.22557 N s/m to the CSV's digits, the area sensor's traction over
 // a 0.7 m face times its length 1.22266 (0.24 % short: the face samples each collision's

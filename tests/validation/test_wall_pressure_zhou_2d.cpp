@@ -5,7 +5,7 @@
 //
 // Two windows of t* = t sqrt(g/H) after the first impact: 3.4-5.0 (the water piling up against
 // the wall) and 5.0-6.0 (before the second impact), and the arrival of the second impact (the
-// first t* after 5.5 where the 10 ms average exceeds 0.75 rho g H). Measured (session 46, one
+// first t* after 5.5 where the 10 ms average exceeds 0.75 rho g H). Measured (2026-11-29, one
 // thread): this run reads 0.377 and 0.441 rho g H and t* = 6.33, against De Courcy's 0.363,
 // 0.465 and 6.32. Four runs of perf/impact/run.sh at H/30 (c0 = 20 sqrt(gH) = 48.522 m/s where
 // the case says 48.52, lattice jitter 0 to 0.01 dx) read 0.367-0.383, 0.459-0.484 and

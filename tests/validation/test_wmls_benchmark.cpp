@@ -1,5 +1,5 @@
-// Seed 004's operator benchmark (Park et al. 2014, section 3.1; operator_accuracy.hpp): WMLS
-// gradient and Laplacian within the seed's 6.5 % and 3.2 % on 50 %-random particles, far
+// Park et al.'s (2014) operator benchmark (section 3.1; operator_accuracy.hpp): WMLS
+// gradient and Laplacian within the paper's 6.5 % and 3.2 % on 50 %-random particles, far
 // better than MPS and SPH on the same particles; and the orders of convergence of the
 // quadratic fit on random particles (docs/WMLS.md, "Orders"): gradient 2, Laplacian 1; and
 // the same accuracy in 3-D.
@@ -23,7 +23,7 @@ OperatorErrors errors_for(Operator op, LsWeight weight, const OperatorBenchmark&
 
 } // namespace
 
-TEST_CASE("Seed 004 benchmark: WMLS within 6.5 % (gradient) and 3.2 % (Laplacian)") {
+TEST_CASE("Park et al. (2014) benchmark: WMLS within 6.5 % (gradient) and 3.2 % (Laplacian)") {
     const OperatorBenchmark b;
     const auto x = perturbed_lattice<2>(b);
     const auto nbrs = neighbour_lists<2>(x, b.re());
@@ -36,7 +36,7 @@ TEST_CASE("Seed 004 benchmark: WMLS within 6.5 % (gradient) and 3.2 % (Laplacian
                 "): relative error gradient / Laplacian: WMLS(PNU weight) ", wmls.gradient, " / ",
                 wmls.laplacian, ", WMLS(smooth) ", smooth.gradient, " / ", smooth.laplacian,
                 ", MPS ", mps.gradient, " / ", mps.laplacian, ", SPH ", sph.gradient, " / ",
-                sph.laplacian, "; seed 004: WMLS 0.065 / 0.032, PNU-MPS 0.685 / 0.604");
+                sph.laplacian, "; Park et al. (2014): WMLS 0.065 / 0.032, PNU-MPS 0.685 / 0.604");
         CHECK(wmls.not_ok == 0);
         CHECK(wmls.gradient < 0.065);
         CHECK(wmls.laplacian < 0.032);
@@ -76,9 +76,9 @@ TEST_CASE("Convergence on random particles: WMLS gradient ~ l0^2, Laplacian ~ l0
 }
 
 TEST_CASE("3-D counterpart: WMLS on a 50 %-random cube, against MPS") {
-    // No figure from the seed in 3-D. The corner and edge stencils of a cube are one-sided in
+    // No figure from the paper in 3-D. The corner and edge stencils of a cube are one-sided in
     // two or three directions, so all particles are held to the gradient figure only, the
-    // interior ones to both of the seed's 2-D figures.
+    // interior ones to both of the paper's 2-D figures.
     OperatorBenchmark b;
     b.hi = 2.0; // 13^3 particles
     const auto x = perturbed_lattice<3>(b);

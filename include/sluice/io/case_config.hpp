@@ -25,7 +25,7 @@ using Triple = std::array<double, 3>;
 // that physics formulas take, are in physics/options.hpp.
 
 // How a step advances the flow: weakly compressible SPH (explicit, EOS pressure) or the
-// incompressible projection scheme of seed 004 (implicit pressure Poisson equation with WMLS
+// incompressible projection scheme of Park et al. (2014) (implicit pressure Poisson equation with WMLS
 // operators; docs/PROJECTION.md).
 enum class Scheme { wcsph, projection };
 enum class PressureSolver { bicgstab, sor };
@@ -178,9 +178,9 @@ struct ProjectionSettings {
     double tolerance = 1e-8; // relative residual of the row-scaled system
     int max_iterations = 1000;
     PressurePreconditioner preconditioner = PressurePreconditioner::two_level;
-    double relaxation = 1.5; // SOR relaxation factor (seed 004: 1.5)
-    double gamma = 0.01;     // relaxation of the density-deviation source term (seed 004: <= 1)
-    double surface_diameter_over_dx = 2.1; // Dilts arc circle (seed 004: 2.1 l0)
+    double relaxation = 1.5; // SOR relaxation factor (Park et al. (2014): 1.5)
+    double gamma = 0.01;     // relaxation of the density-deviation source term (Park et al. (2014): <= 1)
+    double surface_diameter_over_dx = 2.1; // Dilts arc circle (Park et al. (2014): 2.1 l0)
     double surface_density_ratio = 0;      // beta: also surface when n < beta n0 (0 = off)
     CorrectionGradient correction_gradient = CorrectionGradient::second_order;
     CorrectionReference correction_reference = CorrectionReference::hydrostatic;
@@ -279,7 +279,7 @@ struct CaseConfig {
 
     // [runtime]
     int particles_per_group = 2000; // target cost of one cell group, in particles
-    // Rank balancing (issue 3): rebalance when the slowest rank's busy time exceeds the mean
+    // Rank balancing: rebalance when the slowest rank's busy time exceeds the mean
     // by this fraction over a window of steps, and/or every N steps (0 = only on imbalance).
     double rebalance_threshold = 0.10;
     int rebalance_window = 10;
@@ -288,7 +288,7 @@ struct CaseConfig {
     InitialDecomposition initial_decomposition = InitialDecomposition::balanced;
     // On several ranks, start the next step's graph before the step's agreement has arrived
     // (docs/ARCHITECTURE.md, "Time step"). Off by default: byte-identical either way, and no
-    // speed-up has been measured yet (perf/strong_scaling/README.md, session 29).
+    // speed-up has been measured yet (perf/strong_scaling/README.md, 2026-11-26).
     bool run_ahead = false;
 
     // [checkpoint]: <results>/checkpoint.h5 every N steps and/or every M minutes of wall time

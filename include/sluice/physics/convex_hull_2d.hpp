@@ -2,7 +2,7 @@
 // Convex hulls of small 2-D point sets (the inverse-square images of a particle's candidate
 // neighbours). Two independent algorithms with the same answer:
 //
-//  * quadrant_hull_2d: the algorithm of Lee & Lee (2011, seed 003, section 2.나, after
+//  * quadrant_hull_2d: the algorithm of Lee & Lee (2011, section 2.나, after
 //    Randles & Libersky 2000 and Ye 1995): four extreme points P1 (Ymax), P2 (Xmax),
 //    P3 (Ymin), P4 (Xmin) cut the set into the quadrant regions A-D; in each region the
 //    staircase of points that advance in X AND Y from the region's start point forms a

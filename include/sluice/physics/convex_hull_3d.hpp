@@ -1,7 +1,7 @@
 #pragma once
 // Convex hull of a small 3-D point set (the inverse-square images of a particle's candidate
 // neighbours in 3-D). A solid set goes straight to the exact quickhull of quickhull_3d.hpp
-// (issue 22: it replaced Qhull, whose set-up per call cost about 60 us; Qhull stays the
+// (it replaced Qhull, whose set-up per call cost about 60 us; Qhull stays the
 // reference of tests/unit/test_quickhull_3d.cpp), with its tolerance for coplanar points.
 //
 // Degenerate sets: points with identical coordinates count once (lowest index), and when the

@@ -27,7 +27,7 @@ namespace sluice {
 // filters' fallback.
 [[nodiscard]] int orientation_sign_expansion(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c);
 
-// -1, 0 or +1: exact sign of orient(a, b, c). Inline (issue 22: the hulls call it for every
+// -1, 0 or +1: exact sign of orient(a, b, c). Inline (the hulls call it for every
 // turn): Shewchuk's orient2d filter, the rounded determinant having the right sign when its
 // magnitude exceeds (3 + 16 eps) eps (|detleft| + |detright|), eps = 2^-53; else the expansion.
 [[nodiscard]] inline int orientation_sign(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {
@@ -41,7 +41,7 @@ namespace sluice {
     return orientation_sign_expansion(a, b, c);
 }
 
-// 3-D (issue 22, the hull of convex_hull_3d.hpp): exact sign of
+// 3-D (the hull of convex_hull_3d.hpp): exact sign of
 //
 //   orient(a, b, c, d) = ((b - a) x (c - a)) . (d - a),
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Free-surface test through the mapped convex hull (Randles & Libersky 2000; issue 5): a
+// Free-surface test through the mapped convex hull (Randles & Libersky 2000): a
 // particle is inside the fluid when its neighbours surround it in every direction, i.e. when
 // the hull of their inverse-square images (mapped_hull.hpp) encloses the origin; otherwise it
 // is a surface particle. The mapping scales each offset by a positive factor, so the test

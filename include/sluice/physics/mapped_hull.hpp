@@ -1,6 +1,6 @@
 #pragma once
-// The inverse-square mapping of Randles & Libersky (2000), as used by Lee & Lee (2011, seed
-// 003, Fig. 1): a candidate neighbour at offset r = x_j - x_i from the centre particle maps to
+// The inverse-square mapping of Randles & Libersky (2000), as used by Lee & Lee (2011,
+// Fig. 1): a candidate neighbour at offset r = x_j - x_i from the centre particle maps to
 //
 //     r' = r / |r|^2,
 //
@@ -37,7 +37,7 @@ struct MappedHull {
 // below it is round-off of the offsets (x_j - x_i of lattice positions), not geometry.
 inline constexpr Real kMappedHullTolerance = Real(1e-9);
 
-// Whether mapped_hull first drops the images that lie deep inside the hull (issue 22).
+// Whether mapped_hull first drops the images that lie deep inside the hull.
 //
 // Akl & Toussaint's (1978) elimination, in the form the inverse-square map invites: the
 // extreme images along the 2 D coordinate half-axes span a closed polygon (2-D: 4 edges) or
@@ -51,13 +51,13 @@ inline constexpr Real kMappedHullTolerance = Real(1e-9);
 // surface is also convex (every extreme off a facet lies below the facet's plane by 1e-2 rho:
 // it bounds the convex hull of the extremes, inside the images' hull), an image below every
 // facet plane by more than 1e-2 rho is farther than that from every facet of the hull too and
-// is dropped as well (issue 22, second prefilter: the images near the extremes' directions,
+// is dropped as well (the images near the extremes' directions,
 // which the ball keeps: 58 -> 21 of 123 on a jittered 3-D lattice). The hull of
 // the rest has the same corners and facets, so `vertices` and `boundary` are unchanged.
 // The argument holds about any centre inside the extremes' hull and for a surface with a
 // facet contracted (one image the extreme of two half-axes): when the surface is not
 // star-shaped about the origin with a usable rho (a particle at a face or free surface), the
-// extremes' centroid is tried (issue 22, fifth pass: 8 % of the bench's 3-D calls, which
+// extremes' centroid is tried (8 % of the bench's 3-D calls, which
 // now keep ~29 of ~65 images instead of all). In 3-D a convex surface with six distinct
 // extremes is also quickhull's first hull (quickhull_3d.hpp).
 // tests/unit/test_neighbour_selection.cpp compares both forms on lattices and deformed

@@ -2,7 +2,7 @@
 // Acceleration of fluid particles.
 //   pressure:   -sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2) grad_i W_ij          (Monaghan 1992)
 //   viscosity:  sum_j m_j (mu_i + mu_j)/(rho_i rho_j) (x_ij . grad_i W_ij)/(r^2 + eta^2) v_ij
-//               (Morris et al. 1997; seed 000 eq. 7)
+//               (Morris et al. 1997; Tak (2024) eq. 7)
 //   artificial: -sum_j m_j Pi_ij grad_i W_ij, Pi_ij = -alpha c0 h (v_ij.x_ij)/(r^2+eta^2)/rho_ij
 //               for approaching pairs (Monaghan 1992)
 // Wall (dummy) neighbours enter with their extrapolated pressure/density and, in the laminar

@@ -4,7 +4,7 @@
 // MomentumNeighbour record, and four records transpose into four lanes (x, y, v_x, v_y and
 // rho, m, p/rho^2, wall). The scalar loop is bound by moving each neighbour's fields from six
 // arrays, not by its arithmetic; gathering them per field lane by lane cost more than it
-// saved (perf/NOTES.md, sessions 14 and 34), a packed record does not.
+// saved (perf/NOTES.md, 2026-11-22 to 2026-11-27), a packed record does not.
 //
 // Same terms as detail::acceleration_cell<2, K, Viscous, Artificial>; the pairs of a row are
 // dealt to the lanes in list order (pair b + 4k + l to lane l) and the lanes added in a fixed

@@ -1,6 +1,6 @@
 #pragma once
 // Moving Particle Semi-implicit (MPS) gradient and Laplacian models of Koshizuka & Oka (1996),
-// with the weight w of ls_weight.hpp (seed 004 compares against them with the PNU-MPS weight):
+// with the weight w of ls_weight.hpp (Park et al. (2014) compares against them with the PNU-MPS weight):
 //   <grad f>_i = d / n0            sum_j (f_j - f_i) (x_j - x_i) / |x_j - x_i|^2 w_ij
 //   <lap f>_i  = 2 d / (lambda n0) sum_j (f_j - f_i) w_ij
 //   n0     = sum_j w_ij                      over a regular lattice (particle number density)

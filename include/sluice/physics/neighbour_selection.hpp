@@ -4,7 +4,7 @@
 // candidates' offsets.
 //
 //  * radius: every candidate with 0 <= |r| < support (the usual SPH neighbour set).
-//  * convex-hull (Randles & Libersky 2000; Lee & Lee 2011, seed 003): the candidates with
+//  * convex-hull (Randles & Libersky 2000; Lee & Lee 2011): the candidates with
 //    0 < |r| <= candidate radius are mapped by r' = r/|r|^2 and the hull corners of the
 //    images are kept (with `hull_boundary`, also the images on a hull edge/facet, e.g. the
 //    diagonal neighbours of a square lattice, which lie exactly on the edges of the diamond

@@ -11,7 +11,7 @@ enum class KernelType { quintic, wendland_c2, cubic_spline };
 enum class DensityDiffusion { antuono, fourtakas };
 enum class EosType { linear, tait };
 
-// Which neighbours an operator uses (issue 5; Randles & Libersky 2000 as in seed 003).
+// Which neighbours an operator uses (Randles & Libersky 2000 as in Lee & Lee (2011)).
 enum class NeighbourPolicy {
     radius,     // every particle within the operator's support
     convex_hull // the hull vertices of the inverse-square images of the candidates

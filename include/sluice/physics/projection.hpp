@@ -1,7 +1,7 @@
 #pragma once
-// Formulas of the incompressible projection step (seed 004, Park et al. 2014, section 2.3,
+// Formulas of the incompressible projection step (Park et al. 2014, section 2.3,
 // after the PNU-MPS algorithm of Lee et al. 2011; docs/PROJECTION.md derives each one).
-// The seed's equations (12)-(16) are missing from its text; the numbers P1-P8 below are those
+// The paper's equations (12)-(16) are missing from its text; the numbers P1-P8 below are those
 // of docs/PROJECTION.md.
 //
 //   P1 predictor        u*_i = u^n_i + dt (nu lap u_i + g)
@@ -118,8 +118,8 @@ Vec<D> corrected_velocity(const Vec<D>& u_star, const Vec<D>& grad_p, Real rho0,
     return u_star - dt / rho0 * grad_p;
 }
 
-// Wall collision (after Koshizuka et al. 1998's collision model, in PNU-MPS's spirit: seed
-// 004 notes its splashing particles need one). The walls act through the pressure only where
+// Wall collision (after Koshizuka et al. 1998's collision model, in PNU-MPS's spirit: Park et al.
+// (2014) note its splashing particles need one). The walls act through the pressure only where
 // their rows see fluid pressure; above the free surface their extrapolated pressure is
 // negative and is not applied (P7), so nothing else keeps a splashing particle out of a wall.
 // A fluid particle closer than `distance` to a wall particle and moving towards it loses the
@@ -153,7 +153,7 @@ Vec<D> wall_collision(const Vec<D>& v, const Vec<D>& offset, Real distance, Real
 }
 
 // The wall collision along the wall's normal (projection.wall_collision = "wall_normal", the
-// default since session 39; docs/PROJECTION.md, "Wall collision"). wall_collision acts along
+// default since 2026-11-28; docs/PROJECTION.md, "Wall collision"). wall_collision acts along
 // the line of centres to one wall particle: a particle that slides along a floor and dips
 // towards the wall particle ahead of it loses forward speed as well, a friction no wall
 // exerts (on the Zhou dam break it took 24 N s per metre from the surge over 0.5-0.8 s, 8 % of
@@ -204,7 +204,7 @@ Vec<D> collision_velocity_change(const Vec<D>& v_i, const Vec<D>& v_j, const Vec
 
 // Number-density surface criterion (Koshizuka & Oka 1996, MPS): a particle whose number
 // density n_i = sum_j w(r_ij) is below beta n0 is a free-surface particle (p = 0), in addition
-// to the arc test. beta = 0 turns it off. On a lattice with the seed's re = 3.1 l0 and the
+// to the arc test. beta = 0 turns it off. On a lattice with the paper's re = 3.1 l0 and the
 // PNU-MPS weight the first row below a flat surface has n = 0.634 n0, the second 0.908 n0,
 // the third 0.998 n0 (docs/PROJECTION.md, P5).
 inline bool below_surface_density(Real n, Real n0, Real beta) {

@@ -1,6 +1,6 @@
 #pragma once
 // Quickhull (Barber, Dobkin & Huhdanpaa 1996) for the small 3-D point sets of the mapped hull
-// (issue 22: the inverse-square images of a particle's ~40-100 candidate neighbours, seed 003),
+// (the inverse-square images of a particle's ~40-100 candidate neighbours, Lee & Lee (2011)),
 // written for them: no set-up per call, buffers owned by the caller.
 //
 // Every facet and horizon decision is the exact orientation predicate of exact_orientation.hpp,
@@ -63,7 +63,7 @@ struct QuickhullWork {
 // points whose octahedron (facet per octant) the caller has proved convex with a margin far
 // beyond rounding (mapped_hull's prefilter: every extreme below every other facet's plane by
 // 1e-2 of its inradius). The hull then starts from it instead of the tetrahedron when its
-// volume is above `min_volume` (issue 22, fifth pass: two insertions and three passes over the
+// volume is above `min_volume` (two insertions and three passes over the
 // points less). The hull found is the same convex set; where points lie within eps of a facet
 // (rounded lattices) the triangulation, and with it which of them are corners, can depend on
 // the insertion order, as in Qhull (tests/unit/test_hull_selection_reference.cpp).

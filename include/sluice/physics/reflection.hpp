@@ -1,5 +1,5 @@
 #pragma once
-// Reflective walls (seed 000, Tak 2024, its Steps 3 and 5-9): a particle whose move in a step
+// Reflective walls (Tak 2024, its Steps 3 and 5-9): a particle whose move in a step
 // takes it through a wall face is mirrored back across the face's plane, and the velocity
 // component against the face's normal is reversed and scaled by the restitution coefficient e
 // (e = 0: the particle keeps only its tangential velocity; e = 1: an elastic bounce).

@@ -1,13 +1,13 @@
 #pragma once
 // The WMLS gradient and Laplacian and the free-surface test of one particle, each over the
-// neighbours its own policy selects (issue 22; [neighbours.<operator>] of the case file,
-// neighbour_selection.hpp): radius neighbours as seed 004 fits them, or the convex-hull
-// neighbours of seed 003 (Lee & Lee 2011, after Randles & Libersky 2000) among them.
+// neighbours its own policy selects ([neighbours.<operator>] of the case file,
+// neighbour_selection.hpp): radius neighbours as Park et al. (2014) fits them, or the convex-hull
+// neighbours of Lee & Lee (2011) (Lee & Lee 2011, after Randles & Libersky 2000) among them.
 //
 // Input: the offsets x_j - x_i of every neighbour within the influence radius re (the centre
 // excluded), in a fixed order. Output per offset, in that order: the gradient and Laplacian
 // coefficients (docs/WMLS.md, W7-W8), zero for a neighbour that operator does not use. When
-// both operators use the same set, one fit gives both (as with radius neighbours, seed 004);
+// both operators use the same set, one fit gives both (as with radius neighbours, Park et al. (2014));
 // otherwise each operator's coefficients come from the fit over its own set. The candidates of
 // a convex-hull selection are the given offsets within its candidate radius: a candidate
 // radius beyond re selects among the particles within re.

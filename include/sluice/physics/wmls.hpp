@@ -1,5 +1,5 @@
 #pragma once
-// Weighted moving least squares (WMLS) gradient and Laplacian of seed 004 (Park et al. 2014,
+// Weighted moving least squares (WMLS) gradient and Laplacian of Park et al. (2014,
 // section 2.2; their eqs. 3-11 are missing from the text and re-derived in docs/WMLS.md).
 // f_j - f_i is fitted by the second-order Taylor polynomial of f about x_i over the
 // neighbours j, weighted by w(|x_j - x_i|); the fitted first derivatives are the gradient and

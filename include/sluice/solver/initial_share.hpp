@@ -1,5 +1,5 @@
 #pragma once
-// The distributed start (issue 21): each rank builds only the particles of its own part of the
+// The distributed start: each rank builds only the particles of its own part of the
 // curve, never the whole set. A first pass over the case's particles (initial_state.hpp's
 // visitors) stores nothing but a count per grid cell; from those counts every rank computes the
 // cut points that distributing the whole set would give (tasks::cut_ranks over the occupied

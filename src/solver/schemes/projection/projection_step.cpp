@@ -318,7 +318,7 @@ Vec<D> ProjectionScheme<D>::collide_with_walls(std::uint32_t i, const NeighbourL
         contacts.push_back({P_.id[i], P_.id[j], P_.x[j], P_.mass[i] * (before - v) / dt});
     };
     if (case_.cfg.projection.wall_collision == WallCollision::line_of_centres) {
-        // Along the line of centres to each wall particle in turn (before session 39).
+        // Along the line of centres to each wall particle in turn (before 2026-11-28).
         for (std::uint32_t p = b; p < e; ++p) {
             const std::uint32_t j = list.j[p];
             if (P_.kind[j] != Kind::wall)

@@ -33,9 +33,9 @@ struct GroupTopology {
 
 // How many cell groups a rank holding `particles` cuts its cells into: enough for groups of
 // about `per_group` particles (runtime.particles_per_group), and at least 8 per worker thread,
-// so that the threads finish each stage of the step graph together (seed 000's 6,859-particle
+// so that the threads finish each stage of the step graph together (Tak's (2024) 6,859-particle
 // box at 1x2: 8 groups 29.5 s, 16 groups 25.0 s, medians of three interleaved runs;
-// perf/strong_scaling/README.md, session 31), but no more than that floor needs groups of
+// perf/strong_scaling/README.md, 2026-11-27), but no more than that floor needs groups of
 // fewer than kMinGroupParticles particles (scheduling a task costs microseconds); never
 // fewer than 4 per thread (the earlier floor, kept as it was for one thread: the projection
 // scheme's results follow the grouping, docs/PROJECTION.md §2).

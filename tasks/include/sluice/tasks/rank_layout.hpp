@@ -47,7 +47,7 @@ double imbalance(const std::vector<double>& cost_per_rank);
 // Calls visit(cell) for every cell of the grid whose key lies in [first, last), once each, in
 // no particular order. The work is proportional to those cells (plus the depth of the key
 // tree along the range's two ends), not to the grid: the range is split into the aligned
-// blocks of the Morton tree, and each block inside it is a box of cells (issue 21: no O(grid)
+// blocks of the Morton tree, and each block inside it is a box of cells (no O(grid)
 // scan per rank at a rebalance).
 template <int D, class Visit>
 void for_each_cell_in_keys(const CellGrid<D>& grid, MortonKey first, MortonKey last, Visit&& visit);
