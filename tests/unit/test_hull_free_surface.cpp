@@ -19,7 +19,7 @@ namespace {
 using Site = std::pair<int, int>;
 
 // Surface particles by the hull test, or (arc = true) by Dilts' arc method with circles of
-// diameter radius_over_dx * dx (Park et al. (2014): 2.1 l0), on the same neighbours.
+// diameter radius_over_dx * dx (Park et al. 2014: 2.1 l0), on the same neighbours.
 std::set<Site> surface_2d(const std::set<Site>& sites, double dx, double radius_over_dx,
                           bool arc = false) {
     std::set<Site> surface;

@@ -1,5 +1,5 @@
 // Neighbour-selection policies (radius, convex-hull) and the situation of Lee & Lee's
-// Example 2 (Lee & Lee (2011), Figs. 9-13): a velocity point at the edge of a strongly deformed body
+// Example 2 (Lee & Lee 2011, Figs. 9-13): a velocity point at the edge of a strongly deformed body
 // with 9 candidate stress points keeps 4 hull neighbours.
 #include "sluice/physics/convex_hull_2d.hpp"
 #include "sluice/physics/hull_free_surface.hpp"

@@ -178,9 +178,9 @@ struct ProjectionSettings {
     double tolerance = 1e-8; // relative residual of the row-scaled system
     int max_iterations = 1000;
     PressurePreconditioner preconditioner = PressurePreconditioner::two_level;
-    double relaxation = 1.5; // SOR relaxation factor (Park et al. (2014): 1.5)
-    double gamma = 0.01;     // relaxation of the density-deviation source term (Park et al. (2014): <= 1)
-    double surface_diameter_over_dx = 2.1; // Dilts arc circle (Park et al. (2014): 2.1 l0)
+    double relaxation = 1.5; // SOR relaxation factor (Park et al. 2014: 1.5)
+    double gamma = 0.01;     // relaxation of the density-deviation source term (Park et al. 2014: <= 1)
+    double surface_diameter_over_dx = 2.1; // Dilts arc circle (Park et al. 2014: 2.1 l0)
     double surface_density_ratio = 0;      // beta: also surface when n < beta n0 (0 = off)
     CorrectionGradient correction_gradient = CorrectionGradient::second_order;
     CorrectionReference correction_reference = CorrectionReference::hydrostatic;

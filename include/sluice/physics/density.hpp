@@ -1,5 +1,5 @@
 #pragma once
-// Density: summation (Tak (2024) eq. 6) or the continuity equation with delta-SPH density
+// Density: summation (Tak 2024, eq. 6) or the continuity equation with delta-SPH density
 // diffusion in the Antuono et al. (2010) / Marrone et al. (2011) form, whose renormalised
 // density gradient removes the hydrostatic part so a still tank stays still.
 // Each function handles the particles of one cell; it writes only those particles' fields.

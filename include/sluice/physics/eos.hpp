@@ -1,6 +1,6 @@
 #pragma once
 // Equations of state for weakly compressible SPH.
-//   linear (Tak (2024) eq. 8, written about the reference density): p = c0^2 (rho - rho0) + p_b
+//   linear (Tak 2024, eq. 8, written about the reference density): p = c0^2 (rho - rho0) + p_b
 //   Tait (Monaghan 1994, gamma = 7):  p = rho0 c0^2 / gamma ((rho/rho0)^gamma - 1) + p_b
 #include "sluice/core/types.hpp"
 #include "sluice/physics/options.hpp"

@@ -2,7 +2,7 @@
 // Free-surface particles by circle (2-D) or sphere (3-D) coverage; docs/WMLS.md, "Free surface".
 //
 // 2-D, Dilts' arc method (Dilts 2000; Park et al. 2014, section 2.4): every
-// particle carries a circle of diameter `diameter` (Park et al. (2014): 2.1 l0). A neighbour at distance
+// particle carries a circle of diameter `diameter` (Park et al. 2014: 2.1 l0). A neighbour at distance
 // d < diameter covers the open arc of the particle's circle inside its own circle: the arc of
 // half-angle arccos(d / diameter) centred on the direction to the neighbour. The particle is
 // on the free surface when the union of these arcs leaves any part of its circle uncovered.

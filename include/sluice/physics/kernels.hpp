@@ -13,7 +13,7 @@
 
 namespace sluice {
 
-// Morris (1996) quintic spline, support 3h (Tak (2024), eq. 4):
+// Morris (1996) quintic spline, support 3h (Tak 2024, eq. 4):
 //   W = s [(3-q)^5 - 6(2-q)^5 + 15(1-q)^5], terms dropped where their base is negative.
 // s = 1/(120h) in 1-D (Tak (2024) prints 120/h), 7/(478 pi h^2) in 2-D, 1/(120 pi h^3) in 3-D.
 // Tak (2024) (after Morris 1996) prints 3/(359 pi h^3) in 3-D, which integrates to 1.0028: the

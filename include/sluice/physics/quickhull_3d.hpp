@@ -1,6 +1,6 @@
 #pragma once
 // Quickhull (Barber, Dobkin & Huhdanpaa 1996) for the small 3-D point sets of the mapped hull
-// (the inverse-square images of a particle's ~40-100 candidate neighbours, Lee & Lee (2011)),
+// (the inverse-square images of a particle's ~40-100 candidate neighbours, Lee & Lee 2011),
 // written for them: no set-up per call, buffers owned by the caller.
 //
 // Every facet and horizon decision is the exact orientation predicate of exact_orientation.hpp,

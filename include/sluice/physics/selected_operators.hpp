@@ -7,7 +7,7 @@
 // Input: the offsets x_j - x_i of every neighbour within the influence radius re (the centre
 // excluded), in a fixed order. Output per offset, in that order: the gradient and Laplacian
 // coefficients (docs/WMLS.md, W7-W8), zero for a neighbour that operator does not use. When
-// both operators use the same set, one fit gives both (as with radius neighbours, Park et al. (2014));
+// both operators use the same set, one fit gives both (as with radius neighbours, Park et al. 2014);
 // otherwise each operator's coefficients come from the fit over its own set. The candidates of
 // a convex-hull selection are the given offsets within its candidate radius: a candidate
 // radius beyond re selects among the particles within re.
