@@ -25,6 +25,7 @@ struct Pose {
     Eigen::Vector3d omega = Eigen::Vector3d::Zero(); // angular velocity
     Eigen::Vector3d alpha = Eigen::Vector3d::Zero(); // angular acceleration
     double angle = 0;                                // theta, about the motion's axis
+    double angle_rate = 0;                           // its rate
 
     [[nodiscard]] Eigen::Vector3d arm(const Eigen::Vector3d& x0) const { return R * (x0 - centre); }
     [[nodiscard]] Eigen::Vector3d position(const Eigen::Vector3d& x0) const {
@@ -62,6 +63,7 @@ struct RigidMotion {
         }
         const SignalValue th = angle(t);
         p.angle = th.value;
+        p.angle_rate = th.rate;
         p.R = Eigen::AngleAxisd(th.value, axis).toRotationMatrix();
         p.omega = th.rate * axis;
         p.alpha = th.accel * axis;

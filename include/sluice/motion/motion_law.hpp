@@ -1,0 +1,61 @@
+#pragma once
+// A wall object's prescribed motion as the case states it ([[motions]] in a case file,
+// docs/CASE_REFERENCE.md), and the rigid motion it makes. Pure data and numerics: the case
+// reader fills a MotionLaw (a time series' rows included), make_motion turns it into the
+// poses of motion/rigid_motion.hpp.
+#include "sluice/motion/rigid_motion.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sluice {
+
+enum class MotionKind {
+    sway,                  // translation: amplitude sin(2 pi t / period + phase)
+    roll,                  // rotation about centre/axis: angle sin(2 pi t / period + phase)
+    constant_velocity,     // translation at `velocity`
+    constant_acceleration, // translation at `acceleration` from rest
+    file,                  // translation and angle from a time series
+    piston,                // piston wave-maker, regular waves (Biesel; optional 2nd order)
+    flap,                  // flap wave-maker hinged at `centre`, regular waves
+    piston_irregular,      // piston wave-maker, JONSWAP sea
+};
+
+struct MotionLaw {
+    std::string name;
+    MotionKind kind = MotionKind::sway;
+    double start = 0; // [s] nothing moves before
+    double ramp = 0;  // [s] smooth ramp-in after start
+    using V3 = std::array<double, 3>;
+    V3 amplitude{};                     // sway [m]
+    double angle = 0;                   // roll amplitude [deg]
+    double period = 0;                  // sway, roll [s]
+    double phase = 0;                   // sway, roll [deg]
+    V3 velocity{};                      // constant_velocity [m/s]
+    V3 acceleration{};                  // constant_acceleration [m/s^2]
+    V3 centre{};                        // rotation centre (roll, file, flap hinge) [m]
+    V3 axis{0, 0, 1};                   // rotation axis (unit; z in 2-D)
+    V3 direction{1, 0, 0};              // piston stroke direction (unit)
+    double wave_height = 0;             // piston, flap [m]
+    double wave_period = 0;             // piston, flap [s]
+    double depth = 0;                   // still-water depth at the paddle [m]
+    bool second_order = false;          // piston: Madsen's (1971) second-order stroke
+    double hs = 0, tp = 0, gamma = 3.3; // piston_irregular: JONSWAP sea
+    int components = 64;
+    std::uint64_t seed = 1;
+    double g = 9.81; // |gravity| [m/s^2]: the wave-maker's dispersion relation
+    // file: rows of time [s], displacement [m] (x, y, z) and angle [deg] about centre/axis,
+    // taken relative to their values at t = 0 (interpolated by a modified Akima spline).
+    std::vector<double> series_t;
+    std::vector<V3> series_d;
+    std::vector<double> series_angle;
+
+    bool operator==(const MotionLaw&) const = default;
+};
+
+// The rigid motion of a law.
+RigidMotion make_motion(const MotionLaw& law);
+
+} // namespace sluice
