@@ -28,7 +28,7 @@ template <bool Diffuse, DensityDiffusion Form>
 SLUICE_FLATTEN void
 continuity_lanes_cell(const Neighbourhood<2>& nb, const DensityDiffusionParams<2>& diff,
                       CellIndex c, const Particles<2>& P, const MomentumNeighbour<2>* records,
-                      std::span<const Vec<2>> vel, std::span<Real> drho_out) {
+                      std::span<const Vec<2>> vel, std::span<Real> drho_out, bool moving_walls) {
     constexpr bool antuono = Diffuse && Form == DensityDiffusion::antuono;
     constexpr bool fourtakas = Diffuse && Form == DensityDiffusion::fourtakas;
     const Real4 zero{0, 0, 0, 0}, minus_two = zero - 2;
@@ -60,8 +60,10 @@ continuity_lanes_cell(const Neighbourhood<2>& nb, const DensityDiffusionParams<2
                 transpose_lanes(rho_j, m_j, unused, wall_j);
                 const Mask4 wall = wall_j != zero;
                 const Real4 dx = xi - xj, dy = yi - yj;
-                vxj = wall ? zero : vxj; // fixed wall: v_j = 0
-                vyj = wall ? zero : vyj;
+                if (!moving_walls) { // fixed walls: v_j = 0 (their v_half is not exchanged)
+                    vxj = wall ? zero : vxj;
+                    vyj = wall ? zero : vyj;
+                }
                 const Real4 dv_dx = (vx_i - vxj) * dx + (vy_i - vyj) * dy;
                 sum_div += m_j * factor * dv_dx;
                 if constexpr (Diffuse) {
@@ -101,18 +103,19 @@ void continuity_rate_lanes([[maybe_unused]] const Neighbourhood<D>& nb,
                            [[maybe_unused]] CellIndex c, [[maybe_unused]] const Particles<D>& P,
                            [[maybe_unused]] const MomentumNeighbour<D>* records,
                            [[maybe_unused]] std::span<const Vec<D>> vel,
-                           [[maybe_unused]] std::span<Real> drho_out) {
+                           [[maybe_unused]] std::span<Real> drho_out,
+                           [[maybe_unused]] bool moving_walls = false) {
 #if defined(__AVX__) && !defined(SLUICE_SINGLE_PRECISION)
     if constexpr (D == 2) {
         if (diff.delta_h_c0 <= 0)
-            detail::continuity_lanes_cell<false, DensityDiffusion::antuono>(nb, diff, c, P, records,
-                                                                            vel, drho_out);
+            detail::continuity_lanes_cell<false, DensityDiffusion::antuono>(
+                nb, diff, c, P, records, vel, drho_out, moving_walls);
         else if (diff.form == DensityDiffusion::antuono)
-            detail::continuity_lanes_cell<true, DensityDiffusion::antuono>(nb, diff, c, P, records,
-                                                                           vel, drho_out);
+            detail::continuity_lanes_cell<true, DensityDiffusion::antuono>(
+                nb, diff, c, P, records, vel, drho_out, moving_walls);
         else
             detail::continuity_lanes_cell<true, DensityDiffusion::fourtakas>(
-                nb, diff, c, P, records, vel, drho_out);
+                nb, diff, c, P, records, vel, drho_out, moving_walls);
         return;
     }
 #endif

@@ -108,12 +108,13 @@ struct DensityDiffusionParams {
 // With grad_i W_ij = F dx (dx = x_i - x_j), (x_j - x_i)/r^2 . grad_i W_ij = -F exactly, so
 // neither form divides by r^2 per pair.
 // `vel` is the velocity the leap-frog advances densities with: v^{n+1/2}, the same that
-// drifts the positions, so density and velocity stay staggered like x and v.
+// drifts the positions, so density and velocity stay staggered like x and v; with
+// `moving_walls` the wall particles' too (their prescribed velocity at mid-step).
 template <int D, class K>
 SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
                                     const DensityDiffusionParams<D>& diff, CellIndex c,
                                     const Particles<D>& P, std::span<const Vec<D>> vel,
-                                    std::span<Real> drho_out) {
+                                    std::span<Real> drho_out, bool moving_walls = false) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     // One loop per diffusion form (compile-time constants inside), so that no pair computes
@@ -138,7 +139,9 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
                     const bool wall = P.kind[j] == Kind::wall;
                     Real dv_dx = 0, g_dx = 0, rho_h = 0;
                     for (int d = 0; d < D; ++d) {
-                        const Real v_j = wall ? Real(0) : vel[j][d]; // fixed wall: v_j = 0
+                        // A fixed wall's v_j = 0 (its v_half is not exchanged); a moving wall's
+                        // is its velocity at the middle of the step.
+                        const Real v_j = wall && !moving_walls ? Real(0) : vel[j][d];
                         dv_dx += (v_i[d] - v_j) * dx[d];
                         if constexpr (antuono)
                             g_dx += (g_i[d] + P.grad_rho[j][d]) * dx[d];

@@ -1,6 +1,7 @@
 #pragma once
 // Wall models. (Reflective walls, the other model, are physics/reflection.hpp.)
-// Fixed dummy particles (Adami, Hu & Adams 2012, eqs. 22-28): each wall particle takes
+// Dummy particles (Adami, Hu & Adams 2012, eqs. 22-28), fixed or moving with their wall: each wall
+// particle takes
 //   the pressure extrapolated from the fluid around it,
 //     p_w = [sum_f p_f W_wf + (g - a_w) . sum_f rho_f (x_w - x_f) W_wf] / sum_f W_wf,
 //   the density that pressure gives through the EOS, and for no-slip the velocity
@@ -37,25 +38,40 @@ struct AdamiSums {
         rho_r += rho_f * W * dx;
         v += W * v_f;
     }
-    // p_w = [sum_f p_f W + g . sum_f rho_f (x_w - x_f) W] / sum_f W (fixed walls, a_w = 0);
-    // the background pressure where no fluid is near.
-    [[nodiscard]] Real pressure(const Vec<D>& gravity, Real p_background) const {
-        return w > 0 ? (pw + gravity.dot(rho_r)) / w : p_background;
+    // p_w = [sum_f p_f W + (g - a_w) . sum_f rho_f (x_w - x_f) W] / sum_f W (a fixed wall
+    // passes g: a_w = 0); the background pressure where no fluid is near.
+    [[nodiscard]] Real pressure(const Vec<D>& gravity_less_wall_accel, Real p_background) const {
+        return w > 0 ? (pw + gravity_less_wall_accel.dot(rho_r)) / w : p_background;
     }
-    // v_bc = -(mean fluid velocity) for no-slip (2 v_w - <v>, v_w = 0), +<v> for free slip.
-    [[nodiscard]] Vec<D> boundary_velocity(bool no_slip) const {
+    // v_bc = 2 v_w - <v> for no-slip, <v> for free slip (fixed walls: v_w = 0). A moving
+    // free-slip wall keeps the mean fluid velocity too: its normal motion enters through the
+    // continuity equation's relative velocity and the pressure's a_w.
+    [[nodiscard]] Vec<D> boundary_velocity(bool no_slip,
+                                           const Vec<D>& v_wall = Vec<D>::Zero()) const {
         if (w <= 0)
-            return Vec<D>::Zero();
-        return no_slip ? Vec<D>(-v / w) : Vec<D>(v / w);
+            return no_slip ? v_wall : Vec<D>::Zero();
+        return no_slip ? Vec<D>(2 * v_wall - v / w) : Vec<D>(v / w);
+    }
+};
+
+// The velocity and acceleration of a wall particle: none for fixed walls.
+template <int D>
+struct FixedWalls {
+    static constexpr bool moving = false;
+    void operator()(std::uint32_t, Vec<D>& v_w, Vec<D>& a_w) const {
+        v_w.setZero();
+        a_w.setZero();
     }
 };
 
 // Adami pressure, density, mass (rho_w V_w) and boundary velocity of the wall particles of
-// cell c (fixed walls: a_w = 0, v_w = 0).
-template <int D, class K>
+// cell c; `wall(w, v_w, a_w)` gives wall particle w's velocity and acceleration (FixedWalls:
+// zero; a prescribed motion's otherwise).
+template <int D, class K, class WallKinematics = FixedWalls<D>>
 SLUICE_FLATTEN void dummy_wall_state(const Neighbourhood<D>& nb, const K& kernel, const Eos& eos,
                                      const Vec<D>& gravity, bool no_slip, Real wall_volume,
-                                     CellIndex c, Particles<D>& P) {
+                                     CellIndex c, Particles<D>& P,
+                                     const WallKinematics& wall = {}) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     for (std::uint32_t w = nb.begin(c); w < nb.end(c); ++w) {
         if (P.kind[w] != Kind::wall)
@@ -66,8 +82,15 @@ SLUICE_FLATTEN void dummy_wall_state(const Neighbourhood<D>& nb, const K& kernel
                 return;
             sums.add(kernel.W(std::sqrt(r2)), P.p[f], P.rho[f], dx, P.v[f]);
         });
-        P.p[w] = sums.pressure(gravity, eos.p_background);
-        P.v_bc[w] = sums.boundary_velocity(no_slip);
+        if constexpr (WallKinematics::moving) {
+            Vec<D> v_w, a_w;
+            wall(w, v_w, a_w);
+            P.p[w] = sums.pressure(gravity - a_w, eos.p_background);
+            P.v_bc[w] = sums.boundary_velocity(no_slip, v_w);
+        } else {
+            P.p[w] = sums.pressure(gravity, eos.p_background);
+            P.v_bc[w] = sums.boundary_velocity(no_slip);
+        }
         P.rho[w] = eos.density(P.p[w]);
         P.mass[w] = P.rho[w] * wall_volume;
     }
