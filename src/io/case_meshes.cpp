@@ -1,6 +1,8 @@
 // [[walls.meshes]] (case_meshes.hpp).
 #include "case_meshes.hpp"
 
+#include "case_motions.hpp"
+
 #include "sluice/geometry/shape_report.hpp"
 #include "sluice/io/case_reader.hpp"
 #include "sluice/physics/initial_profiles.hpp"
@@ -144,6 +146,7 @@ void read_wall_meshes(const Section& walls, CaseConfig& c) {
                            "(walls behind it, opposite its normals)");
         m.role = s.choice("role", m.role, kRoles);
         const ShapeReport r = read_shape_file(s, c, m);
+        m.motion = motion_reference(s, "motion", c);
         if (m.role == MeshRole::solid)
             require_closed_outward(s, c, m, r, " as a solid", "use role = \"surface\"");
         c.meshes.push_back(std::move(m));

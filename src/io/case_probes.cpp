@@ -4,6 +4,7 @@
 #include "sluice/physics/kernels.hpp"
 
 #include "case_limits.hpp"
+#include "case_motions.hpp"
 
 #include <fmt/format.h>
 
@@ -21,7 +22,8 @@ const std::vector<std::pair<std::string, ProbeType>> kProbeTypes = {
     {"pressure", ProbeType::pressure},
     {"water_level", ProbeType::water_level},
     {"surge_front", ProbeType::surge_front},
-    {"force", ProbeType::force}};
+    {"force", ProbeType::force},
+    {"motion", ProbeType::motion}};
 
 const std::vector<std::pair<std::string, SensorReading>> kSensorReadings = {
     {"force", SensorReading::force},
@@ -233,6 +235,41 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
 
 } // namespace
 
+namespace {
+
+// The motion a probe moves with: `frame` when given; a force probe on a moving wall object
+// moves with it. What cannot follow a moving object yet is refused.
+void read_probe_frame(const Section& s, const CaseConfig& c, ProbeConfig& p) {
+    p.frame = motion_reference(s, "frame", c);
+    if (p.type == ProbeType::motion) {
+        if (p.frame < 0)
+            s.fail("frame", "missing required key for a motion probe: the [[motions]] name "
+                            "whose displacement it records");
+        return;
+    }
+    if (p.type == ProbeType::force && p.frame < 0) {
+        if (p.wall.box >= 0)
+            p.frame = c.boxes[static_cast<std::size_t>(p.wall.box)].motion;
+        else if (p.wall.mesh >= 0)
+            p.frame = c.meshes[static_cast<std::size_t>(p.wall.mesh)].motion;
+        else
+            p.frame = c.tank_motion;
+    }
+    if (p.frame < 0)
+        return;
+    const char* key = s.node("frame") != nullptr ? "frame" : "type";
+    s.require(p.type != ProbeType::surge_front, key,
+              "a surge front is measured in the domain's frame; frame does not apply");
+    s.require(p.type != ProbeType::pressure || p.diameter == 0, "diameter",
+              "area sensors on moving walls are not supported; a force probe on the moving "
+              "object (lo/hi cut to the sensor's face) reads the load there");
+    s.require(p.type != ProbeType::force || p.reading == SensorReading::force, "reading",
+              "a force probe on a moving wall object reads its wall pairs' force (reading = "
+              "\"force\")");
+}
+
+} // namespace
+
 void read_probes(const Section& root, CaseConfig& c) {
     std::set<std::string> names;
     for (const auto& s : root.entries("probes")) {
@@ -257,11 +294,12 @@ void read_probes(const Section& root, CaseConfig& c) {
 
         if (s.node("type") == nullptr)
             s.reader().fail(s.key("type"), "missing required key (\"pressure\", \"water_level\", "
-                                           "\"surge_front\" or \"force\")");
+                                           "\"surge_front\", \"force\" or \"motion\")");
         p.type = s.choice("type", ProbeType::pressure, kProbeTypes);
         const char* type_word = p.type == ProbeType::pressure      ? "pressure"
                                 : p.type == ProbeType::water_level ? "water_level"
                                 : p.type == ProbeType::force       ? "force"
+                                : p.type == ProbeType::motion      ? "motion"
                                                                    : "surge_front";
         const auto only_for = [&](std::string_view key, bool allowed) {
             s.require(allowed || s.node(key) == nullptr, key,
@@ -343,6 +381,7 @@ void read_probes(const Section& root, CaseConfig& c) {
         }
         if (force)
             read_force_region(s, c, p);
+        read_probe_frame(s, c, p);
 
         const toml::node* iv = s.node("interval");
         if (iv != nullptr && iv->is_string()) {

@@ -1,14 +1,15 @@
 // TOML case file -> validated CaseConfig: each section of the case read and checked, in file
 // order. The sections are read by case_fluid.cpp ([case], [domain], [fluid], [particles],
 // [[blocks]]), case_numerics.cpp (the scheme, [numerics], [projection], [neighbours.*]),
-// case_walls.cpp, case_probes.cpp and case_run_control.cpp ([time], [output], [runtime],
-// [checkpoint], [limits]); case_size.cpp checks the case's size. The TOML machinery (typed
-// look-ups, the schema and its ranges, --set) is in toml_section.hpp, case_schema.hpp and
-// case_toml.hpp.
+// case_motions.cpp ([[motions]]), case_walls.cpp, case_probes.cpp and case_run_control.cpp ([time],
+// [output], [runtime], [checkpoint], [limits]); case_size.cpp checks the case's size. The TOML
+// machinery (typed look-ups, the schema and its ranges, --set) is in toml_section.hpp,
+// case_schema.hpp and case_toml.hpp.
 #include "sluice/io/case_reader.hpp"
 
 #include "case_fingerprint.hpp"
 #include "case_fluid.hpp"
+#include "case_motions.hpp"
 #include "case_numerics.hpp"
 #include "case_probes.hpp"
 #include "case_run_control.hpp"
@@ -44,6 +45,8 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
     read_scheme(top, c);
     read_numerics(top.sub("numerics"), c);
     read_projection(top.sub("projection"), c);
+    read_motions(top, c);
+    read_damping_zones(top, c);
     read_walls(top.sub("walls"), c);
     check_walls_for_scheme(top, c);
     check_blocks_in_tank(top, c);
@@ -54,6 +57,7 @@ CaseConfig build(const toml::table& root, Reader& r, const std::string& path) {
     read_neighbours(top.sub("neighbours"), c);
     read_checkpoint_table(top.sub("checkpoint"), c);
     read_limits(top.sub("limits"), c);
+    check_motions(top, c);
     check_case_size(top, c);
     return c;
 }
@@ -74,6 +78,8 @@ CaseConfig read_case(const std::string& path, const std::vector<std::string>& ov
     for (const auto& b : c.blocks)
         if (b.mesh)
             all += b.mesh->digest;
+    for (const auto& d : c.motion_digests)
+        all += d;
     if (all != c.fingerprint)
         c.fingerprint = sha256_hex(all);
     return c;

@@ -6,6 +6,7 @@
 
 #include "case_limits.hpp"
 #include "case_meshes.hpp"
+#include "case_motions.hpp"
 
 #include <fmt/format.h>
 
@@ -78,6 +79,7 @@ void read_walls(const Section& s, CaseConfig& c) {
         (void)s.triple("tank_hi");
         (void)s.strings("tank_faces");
     }
+    c.tank_motion = motion_reference(s, "tank_motion", c);
     c.restitution = s.number("restitution", c.restitution);
     c.no_slip = s.boolean("no_slip").value_or(c.no_slip);
 
@@ -113,6 +115,7 @@ void read_walls(const Section& s, CaseConfig& c) {
         WallBox box;
         box.lo = b.required_triple("lo", "lower corner of the solid box [m]");
         box.hi = b.required_triple("hi", "upper corner of the solid box [m]");
+        box.motion = motion_reference(b, "motion", c);
         for (std::size_t a = 0; a < dim; ++a) {
             b.require(box.lo[a] < box.hi[a], "hi",
                       fmt::format("must be above lo on every axis; on {}: lo = {}, hi = {}",

@@ -26,11 +26,16 @@ std::string probe_csv_header(const ProbeConfig& probe, int dimension) {
             h += dimension == 3 ? ",Mx_Nm,My_Nm,Mz_Nm" : ",Mz_Nm";
         return h;
     }
+    case ProbeType::motion:
+        return dimension == 3 ? "time_s,dx_m,dy_m,dz_m,angle_deg,vx_m_s,vy_m_s,vz_m_s,omega_deg_s"
+                              : "time_s,dx_m,dy_m,angle_deg,vx_m_s,vy_m_s,omega_deg_s";
     }
     return "time_s,value";
 }
 
 std::size_t probe_columns(const ProbeConfig& probe, int dimension) {
+    if (probe.type == ProbeType::motion)
+        return 2 * static_cast<std::size_t>(dimension) + 2;
     if (probe.type != ProbeType::force)
         return 1;
     const auto d = static_cast<std::size_t>(dimension);

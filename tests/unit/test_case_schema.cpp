@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include <iomanip>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -103,6 +104,41 @@ std::string block_mesh_file() {
     return path;
 }
 
+// A complete [[motions]] entry of each kind (2-D, the base's geometry) after its name and kind.
+const std::map<std::string, std::string> kMotionSamples = {
+    {"sway", "amplitude = [0.01, 0]\nperiod = 1\n"},
+    {"roll", "angle = 2\nperiod = 1\ncentre = [1.1, 0.1]\n"},
+    {"constant_velocity", "velocity = [0.1, 0]\n"},
+    {"constant_acceleration", "acceleration = [0.1, 0]\n"},
+    {"piston", "wave_height = 0.01\nwave_period = 1\ndepth = 0.4\n"},
+    {"flap", "wave_height = 0.01\nwave_period = 1\ndepth = 0.4\ncentre = [1.0, 0]\n"},
+    {"piston_irregular", "hs = 0.01\ntp = 1\ndepth = 0.4\n"},
+    {"file", "file = \"absent.csv\"\n"}}; // read after every other key
+
+// The base with an entry of [[motions]] or [[damping_zones]] (which the base lacks) for a key
+// of that table: a motion of the kind the key's condition names, moving the box when
+// `move_box`; other tables' keys leave the text as it is.
+std::string with_entry(std::string text, const std::string& table, const std::string& when,
+                       bool move_box) {
+    std::string entry;
+    if (table == "motions") {
+        std::string kind = "sway";
+        if (const auto p = when.find("kind = \""); p != std::string::npos)
+            kind = when.substr(p + 8, when.find('"', p + 8) - (p + 8));
+        entry = "[[motions]]\nname = \"m\"\nkind = \"" + kind + "\"\n" + kMotionSamples.at(kind);
+        if (move_box) {
+            const std::string box_hi = "hi = [1.2, 0.2]\n";
+            text.insert(text.find(box_hi) + box_hi.size(), "motion = \"m\"\n");
+        }
+    } else if (table == "damping_zones") {
+        entry = "[[damping_zones]]\nstart = [1.5, 0]\nend = [1.9, 0]\n";
+    } else {
+        return text;
+    }
+    text.insert(text.find("[time]"), entry + "\n");
+    return text;
+}
+
 std::string base(const std::string& scheme) {
     std::string t = kBase;
     t.replace(t.find("SCHEME"), 6, scheme);
@@ -128,7 +164,7 @@ bool is_toml_value(const std::string& text) {
 // the kind the key needs).
 std::string set_path(const std::string& table, const std::string& key, const std::string& when) {
     if (table == "blocks" || table == "walls.planes" || table == "walls.boxes" ||
-        table == "walls.meshes")
+        table == "walls.meshes" || table == "motions" || table == "damping_zones")
         return table + ".0." + key;
     if (table == "probes") {
         int i = 0;
@@ -148,7 +184,8 @@ std::vector<std::string> when_overrides(const std::string& table, const std::str
     // diameter", or "type = \"force\" | \"pressure\", with a diameter" for the reading.
     if (when.ends_with("\"pressure\", with a diameter"))
         return {"probes.0.diameter=0.02"};
-    if (when.empty() || when.rfind("type = ", 0) == 0)
+    // A motion's kind is that of the entry with_entry writes.
+    if (when.empty() || when.rfind("type = ", 0) == 0 || table == "motions")
         return {};
     if (table == "blocks" && when == "shape = \"mesh\"")
         return {"blocks.0.shape=\"mesh\"", "blocks.0.file=\"" + block_mesh_file() + "\""};
@@ -181,7 +218,14 @@ const std::set<std::string> kComputedDefaults = {"case.name",
                                                  "probes.min_thickness",
                                                  "limits.max_speed",
                                                  "limits.min_density",
-                                                 "limits.max_density"};
+                                                 "limits.max_density",
+                                                 "walls.tank_motion",
+                                                 "walls.boxes.motion",
+                                                 "walls.meshes.motion",
+                                                 "probes.frame",
+                                                 "motions.centre",
+                                                 "motions.axis",
+                                                 "motions.direction"};
 
 } // namespace
 
@@ -213,7 +257,8 @@ TEST_CASE("schema: a documented default is what the reader uses when the key is 
                                << "\" is neither a TOML value nor a known computed default");
             continue;
         }
-        std::string text = base(applies == "projection" ? "projection" : "wcsph");
+        std::string text =
+            with_entry(base(applies == "projection" ? "projection" : "wcsph"), table, when, true);
         if (full == "walls.model") // its default ("none") allows no tank, box or plane
             text.erase(text.find("[walls]"), text.find("[time]") - text.find("[walls]"));
         const std::vector<std::string> cond = when_overrides(table, when);
@@ -238,15 +283,32 @@ TEST_CASE("schema: a key of one scheme is refused under the other, naming it") {
         const std::string other = applies == "wcsph" ? "projection" : "wcsph";
         const std::string full = table.empty() ? key : table + "." + key;
         const std::string def = k["default"];
+        // A key of an array of tables the base lacks: an entry of it (refused as a whole, the
+        // table named); one of an entry the base has: set in that entry, a string for a
+        // motion's name (refused naming the entry's key); the others as they are.
+        std::string text = base(other), expected = full;
+        std::vector<std::string> overrides;
+        if (table == "motions" || table == "damping_zones" || k["type"] == "array of tables") {
+            text = with_entry(text, table.empty() ? key : table, k["when"], false);
+            expected = table.empty() ? key : table;
+        } else if (table == "walls.boxes" || table == "walls.meshes" || table == "probes") {
+            overrides = {set_path(table, key, "") + "=\"m\""};
+            expected = table + "[0]." + key;
+        } else {
+            overrides = {full + "=" + def};
+        }
         try {
-            (void)read_case_text(base(other), "schema.toml", {full + "=" + def});
+            (void)read_case_text(text, "schema.toml", overrides);
             FAIL("accepted " << full << " under " << other);
         } catch (const CaseError& e) {
-            CHECK_MESSAGE(e.key() == full, e.what());
-            CHECK_MESSAGE(std::string(e.reason())
-                                  .find("applies only to numerics.scheme = \"" + applies + "\"") !=
-                              std::string::npos,
-                          e.what());
+            CHECK_MESSAGE(e.key() == expected, std::string(e.what()));
+            // A wall object's or probe's motion under the other scheme names a motion that
+            // cannot exist there ([[motions]] is refused as a whole).
+            const std::string why = overrides.empty() || expected == full
+                                        ? "applies only to numerics.scheme = \"" + applies + "\""
+                                        : "no [[motions]] entry is called";
+            CHECK_MESSAGE(std::string(e.reason()).find(why) != std::string::npos,
+                          std::string(e.what()));
         }
         ++checked;
     }
@@ -296,7 +358,8 @@ TEST_CASE("schema: every choice of a string key is one the reader knows") {
             continue;
         const std::string table = k["table"], key = k["key"], when = k["when"];
         const std::string applies = k["applies"];
-        const std::string text = base(applies == "projection" ? "projection" : "wcsph");
+        const std::string text =
+            with_entry(base(applies == "projection" ? "projection" : "wcsph"), table, when, true);
         for (const auto& c : k["choices"]) {
             const std::string choice = c.get<std::string>();
             std::vector<std::string> with = when_overrides(table, when);
@@ -323,7 +386,8 @@ TEST_CASE("schema: a value outside a key's interval is refused, naming the key")
         const std::string table = k["table"], key = k["key"], when = k["when"];
         const std::string applies = k["applies"];
         const std::string full = table.empty() ? key : table + "." + key;
-        const std::string text = base(applies == "projection" ? "projection" : "wcsph");
+        const std::string text =
+            with_entry(base(applies == "projection" ? "projection" : "wcsph"), table, when, true);
         std::vector<std::string> values;
         const auto shown = [&](double v) {
             if (type == "integer")

@@ -3,6 +3,7 @@
 // last component is ignored (and must be absent from the file) in 2-D.
 // Every field is documented for users in docs/CASE_REFERENCE.md; keep the two in step.
 #include "sluice/geometry/surface_index.hpp"
+#include "sluice/motion/motion_law.hpp"
 #include "sluice/physics/options.hpp"
 
 #include <array>
@@ -25,8 +26,8 @@ using Triple = std::array<double, 3>;
 // that physics formulas take, are in physics/options.hpp.
 
 // How a step advances the flow: weakly compressible SPH (explicit, EOS pressure) or the
-// incompressible projection scheme of Park et al. (2014) (implicit pressure Poisson equation with WMLS
-// operators; docs/PROJECTION.md).
+// incompressible projection scheme of Park et al. (2014) (implicit pressure Poisson equation with
+// WMLS operators; docs/PROJECTION.md).
 enum class Scheme { wcsph, projection };
 enum class PressureSolver { bicgstab, sor };
 // Preconditioner of the projection scheme's BiCGSTAB (docs/PROJECTION.md, "Preconditioner"):
@@ -53,7 +54,8 @@ enum class VelocityProfile { uniform, taylor_green, rotating, strain };
 // Which lattice points of a block's box are filled: all of them, or those inside the ellipse
 // (ellipsoid in 3-D) inscribed in the box.
 enum class BlockShape { box, ellipse, mesh };
-enum class ProbeType { pressure, water_level, surge_front, force };
+// motion: a moving object's displacement, angle and velocities (no particles read).
+enum class ProbeType { pressure, water_level, surge_front, force, motion };
 // What an area sensor reads: the fluid's normal force on the wall under its face per unit area
 // (wall_force_sensor), the pressure interpolated on the face (wall_pressure_sensor; under the
 // projection scheme plus the traction of its wall collisions), or that traction alone (the
@@ -89,6 +91,7 @@ struct WallPlane {
 // A solid obstacle: an axis-aligned box of fixed dummy wall particles inside the tank.
 struct WallBox {
     Triple lo{}, hi{}; // [m] lattice sites of spacing dx centred in the box
+    int motion = -1;   // CaseConfig::motions index; -1 = fixed
 
     bool operator==(const WallBox&) const = default;
 };
@@ -107,6 +110,7 @@ struct WallMesh {
     bool flip_normals = false;
     double section_z = 0; // 2-D case from a triangle mesh: the cutting plane
     std::string digest;   // SHA-256 of the file's bytes: part of the case fingerprint
+    int motion = -1;      // CaseConfig::motions index; -1 = fixed
     // The placed shape with its queries, built by the case reader (shared: a CaseConfig is
     // copied freely, the shape is read-only).
     std::shared_ptr<const SurfaceIndex> shape;
@@ -114,7 +118,8 @@ struct WallMesh {
     bool operator==(const WallMesh& o) const {
         return file == o.file && path == o.path && role == o.role && scale == o.scale &&
                rotation == o.rotation && translation == o.translation &&
-               flip_normals == o.flip_normals && section_z == o.section_z && digest == o.digest;
+               flip_normals == o.flip_normals && section_z == o.section_z && digest == o.digest &&
+               motion == o.motion;
     }
 };
 
@@ -160,8 +165,20 @@ struct ProbeConfig {
     int direction_axis = 0;                       // surge front: axis of "+x", "-y", ...
     bool direction_negative = false;              // ... and its sign
     double min_thickness = 0;                     // surge front [m]; 0 = 2 dx
+    // The CaseConfig::motions index the probe moves with (-1 = fixed): its position, region and
+    // moment point are given where the object is at t = 0; a gauge measures in its frame.
+    int frame = -1;
 
     bool operator==(const ProbeConfig&) const = default;
+};
+
+// A damping zone ([[damping_zones]], physics/damping_zone.hpp): the velocity relaxes to rest,
+// at a rate ramped quadratically from 0 at `start` to `strength` at `end` and beyond.
+struct DampingZoneConfig {
+    Triple start{}, end{}; // [m]
+    double strength = 10;  // [1/s]
+
+    bool operator==(const DampingZoneConfig&) const = default;
 };
 
 // A NeighbourSelection per operator; read by operators that take a neighbour set (WMLS gradient and
@@ -179,7 +196,7 @@ struct ProjectionSettings {
     int max_iterations = 1000;
     PressurePreconditioner preconditioner = PressurePreconditioner::two_level;
     double relaxation = 1.5; // SOR relaxation factor (Park et al. 2014: 1.5)
-    double gamma = 0.01;     // relaxation of the density-deviation source term (Park et al. 2014: <= 1)
+    double gamma = 0.01; // relaxation of the density-deviation source term (Park et al. 2014: <= 1)
     double surface_diameter_over_dx = 2.1; // Dilts arc circle (Park et al. 2014: 2.1 l0)
     double surface_density_ratio = 0;      // beta: also surface when n < beta n0 (0 = off)
     CorrectionGradient correction_gradient = CorrectionGradient::second_order;
@@ -260,8 +277,16 @@ struct CaseConfig {
     std::vector<WallPlane> planes;       // extra reflective planes
     std::vector<WallBox> boxes;          // dummy walls only: solid obstacles
     std::vector<WallMesh> meshes;        // dummy walls only: shapes from mesh or vertex files
-    double restitution = 1.0;            // reflective walls: normal velocity kept after a bounce
-    bool no_slip = true;                 // dummy walls: no-slip (Adami) or free-slip
+    // [[motions]]: prescribed motions (motion/motion_law.hpp); the tank's, a box's or a mesh's
+    // `motion` is an index into it (-1 = fixed).
+    std::vector<MotionLaw> motions;
+    std::vector<std::string> motion_digests; // SHA-256 of each motion's file ("" without)
+    int tank_motion = -1;
+    double restitution = 1.0; // reflective walls: normal velocity kept after a bounce
+    bool no_slip = true;      // dummy walls: no-slip (Adami) or free-slip
+
+    // [[damping_zones]]
+    std::vector<DampingZoneConfig> damping_zones;
 
     // [time]
     double end_time = 0;        // [s]

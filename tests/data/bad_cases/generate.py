@@ -51,6 +51,20 @@ SAMPLE_ENTRIES = {
     "force": {"name": "F", "type": "force", "face": "x+"},
     # An area sensor on the x- face of the 2-D bases' tank (tank_lo = [0, 0]), 0.1 m up.
     "area": {"name": "A", "type": "pressure", "position": [0.0, 0.1], "diameter": 0.02},
+    "damping_zones": {"start": [1.2, 0.0], "end": [1.6, 0.0]},
+}
+# A complete [[motions]] entry of each kind, so that a mutation of one of its keys is what the
+# reader meets first (a motion file's keys are mutated on a "file" entry without a file: the
+# mutated key is read before the file is).
+SAMPLE_MOTIONS = {
+    "sway": {"amplitude": [0.01, 0.0], "period": 1.0},
+    "roll": {"angle": 2.0, "period": 1.0, "centre": [0.8, 0.0]},
+    "constant_velocity": {"velocity": [0.1, 0.0]},
+    "constant_acceleration": {"acceleration": [0.1, 0.0]},
+    "file": {},
+    "piston": {"wave_height": 0.01, "wave_period": 1.0, "depth": 0.4},
+    "flap": {"wave_height": 0.01, "wave_period": 1.0, "depth": 0.4, "centre": [0.0, 0.0]},
+    "piston_irregular": {"hs": 0.01, "tp": 1.0, "depth": 0.4},
 }
 
 # ------------------------------------------------------------------------------------------
@@ -428,7 +442,14 @@ def toml_value(text):
 def locate(doc, spec):
     """The table (dict) holding the key in `doc`, made valid for it, and its display path."""
     table = spec["table"]
-    if table in ("blocks", "probes", "walls.planes", "walls.boxes", "walls.meshes"):
+    if table == "motions":
+        kind = re.match(r'^kind = "([a-z_]+)"', spec["when"])
+        kind = kind.group(1) if kind else "sway"
+        entry = {"name": "m", "kind": kind, **copy.deepcopy(SAMPLE_MOTIONS[kind])}
+        doc.setdefault("motions", []).append(entry)
+        return entry, f"motions[{len(doc['motions']) - 1}]"
+    if table in ("blocks", "probes", "walls.planes", "walls.boxes", "walls.meshes",
+                 "damping_zones"):
         parent = doc
         *outer, last = table.split(".")
         for p in outer:
@@ -507,7 +528,10 @@ def from_schema(schema):
             doc = copy.deepcopy(odoc)
             entry, path = locate(doc, spec)
             entry[spec["key"]] = v
+            # [[motions]] and [[damping_zones]] are refused as a whole under the other scheme.
+            whole = spec["table"] in ("motions", "damping_zones")
             muts.append((obase, f"schema_{tag}_inapplicable", doc,
+                         spec["table"] if whole else
                          f"{path}.{spec['key']}" if path else spec["key"]))
     return muts
 
