@@ -1,5 +1,6 @@
 // Checks and advice on a validated case, derived from the configuration alone (no particles).
 #include "sluice/solver/case_check.hpp"
+#include "sluice/solver/motion_check.hpp"
 
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/initial_profiles.hpp"
@@ -89,10 +90,12 @@ void check_runnable(const CaseConfig& cfg, const CaseInfo& info) {
                                     *cfg.fixed_dt, info.dt_stable, info.dt_acoustic,
                                     info.dt_viscous, info.dt_force));
     check_clock_advances(cfg, info);
+    if (!cfg.motions.empty())
+        check_motion_paths(cfg, wall_layers(info.support, cfg.dx));
 }
 
 std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& info) {
-    std::vector<CaseWarning> out;
+    std::vector<CaseWarning> out = motion_warnings(cfg);
     const auto dim = static_cast<std::size_t>(cfg.dimension);
 
     const BuiltGeometry built = built_geometry(cfg, wall_layers(info.support, cfg.dx));

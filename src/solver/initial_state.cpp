@@ -377,10 +377,11 @@ ParticleId visit_wall_particles(const CaseConfig& cfg, int layers, ParticleId fi
             inside_tank = inside_tank && k[d] >= axes[d].n_a && k[d] < axes[d].n_a + axes[d].mid;
         if (inside_tank)
             return;
-        sink({next_id++, Kind::wall, x, Vec<D>::Zero(), Real(cfg.rho0), Real(mass)});
+        sink({next_id++, Kind::wall, x, Vec<D>::Zero(), Real(cfg.rho0), Real(mass), 0});
     });
     // Solid obstacles: `layers` layers inside each face of the box.
-    for (const WallBox& b : cfg.boxes) {
+    for (std::size_t ib = 0; ib < cfg.boxes.size(); ++ib) {
+        const WallBox& b = cfg.boxes[ib];
         std::array<std::vector<double>, D> bs;
         std::array<int, D> bn{};
         for (int d = 0; d < D; ++d) {
@@ -389,7 +390,8 @@ ParticleId visit_wall_particles(const CaseConfig& cfg, int layers, ParticleId fi
         }
         for_each_site<D>(bs, [&](const std::array<int, D>& k, const Vec<D>& x) {
             if (in_box_shell<D>(k, bn, layers))
-                sink({next_id++, Kind::wall, x, Vec<D>::Zero(), Real(cfg.rho0), Real(mass)});
+                sink({next_id++, Kind::wall, x, Vec<D>::Zero(), Real(cfg.rho0), Real(mass),
+                      wall_object_index_of_box(ib)});
         });
     }
     return visit_mesh_wall_particles<D>(cfg, layers, next_id, sink);

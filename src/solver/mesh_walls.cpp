@@ -27,11 +27,14 @@ ParticleId visit_mesh_wall_particles(const CaseConfig& cfg, int layers, Particle
                                      const InitialSink<D>& sink) {
     ParticleId next_id = first_id;
     const double mass = cfg.rho0 * std::pow(cfg.dx, D);
-    for (const WallMesh& m : cfg.meshes)
+    for (std::size_t im = 0; im < cfg.meshes.size(); ++im) {
+        const WallMesh& m = cfg.meshes[im];
+        const int object = wall_object_index_of_mesh(cfg, im);
         visit_wall_sites(*m.shape, role_of(m), lattice_of(cfg, m), layers, [&](const WallSite& w) {
-            sink({next_id++, Kind::wall, to_vec<D>(w.x), Vec<D>::Zero(), Real(cfg.rho0),
-                  Real(mass)});
+            sink({next_id++, Kind::wall, to_vec<D>(w.x), Vec<D>::Zero(), Real(cfg.rho0), Real(mass),
+                  object});
         });
+    }
     return next_id;
 }
 

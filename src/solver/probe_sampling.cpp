@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
+#include <optional>
 
 namespace sluice {
 namespace {
@@ -30,6 +32,54 @@ struct Box {
     }
     [[nodiscard]] Box grown(Real by) const { return {lo.array() - by, hi.array() + by}; }
 };
+
+// The pose now of the motion a probe moves with (ProbeConfig::frame), if any.
+template <int D>
+std::optional<Pose> probe_pose(const Simulation<D>& sim, const ProbeConfig& probe) {
+    if (probe.frame < 0)
+        return std::nullopt;
+    for (const auto& o : sim.motion().objects())
+        if (o.motion == probe.frame)
+            return o.rigid.pose(sim.time());
+    return make_motion(sim.config().motions[static_cast<std::size_t>(probe.frame)])
+        .pose(sim.time());
+}
+
+// The box in the domain's frame that holds `body` (given where the object is at t = 0) moved
+// by `pose`: the box around its moved corners (all space when it is unbounded and turns).
+template <int D>
+Box<D> moved_box(const Box<D>& body, const Pose& pose) {
+    const Real inf = std::numeric_limits<Real>::infinity();
+    bool bounded = true;
+    for (int a = 0; a < D; ++a)
+        bounded = bounded && std::isfinite(body.lo[a]) && std::isfinite(body.hi[a]);
+    if (!bounded) {
+        if (pose.angle != 0)
+            return {Vec<D>::Constant(-inf), Vec<D>::Constant(inf)};
+        const Vec<D> d = from_pose_point<D>(pose.d);
+        return {body.lo + d, body.hi + d};
+    }
+    Box<D> out{Vec<D>::Constant(inf), Vec<D>::Constant(-inf)};
+    for (int corner = 0; corner < (1 << D); ++corner) {
+        Vec<D> c;
+        for (int a = 0; a < D; ++a)
+            c[a] = (corner >> a) & 1 ? body.hi[a] : body.lo[a];
+        const Vec<D> x = from_pose_point<D>(pose.position(to_pose_point<D>(c)));
+        out.lo = out.lo.cwiseMin(x);
+        out.hi = out.hi.cwiseMax(x);
+    }
+    return out;
+}
+
+// Where a point of the object's t = 0 placement is now, and where a point now was at t = 0.
+template <int D>
+Vec<D> moved_point(const Vec<D>& x0, const Pose& pose) {
+    return from_pose_point<D>(pose.position(to_pose_point<D>(x0)));
+}
+template <int D>
+Vec<D> body_point(const Vec<D>& x, const Pose& pose) {
+    return from_pose_point<D>(pose.body_point(to_pose_point<D>(x)));
+}
 
 // A length far below any spacing, for comparing coordinates of the geometry: 1e-9 of the
 // domain's largest extent.
@@ -134,7 +184,7 @@ std::vector<WallPatch<D>> force_patches(const CaseConfig& cfg, const ProbeConfig
 // (refresh_dummy_walls), one support further. A gauge reads its surroundings (gauge_bulk_reach dx,
 // a margin of another dx); the probe function applies the exact bounds.
 template <int D>
-Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
+Box<D> fixed_footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
     const Real inf = std::numeric_limits<Real>::infinity();
     const Real reach = 2 * sim.kernel_support();
     const Real dx = Real(sim.config().dx);
@@ -164,9 +214,18 @@ Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
     case ProbeType::force:
         return force_box<D>(sim.config(), probe).grown(reach);
     case ProbeType::surge_front:
-        break; // binned columns, not a footprint
+    case ProbeType::motion:
+        break; // binned columns, or no particles
     }
     return box;
+}
+
+// The footprint where the probe is now (moved with its object).
+template <int D>
+Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
+    const Box<D> box = fixed_footprint(sim, probe);
+    const std::optional<Pose> pose = probe_pose(sim, probe);
+    return pose ? moved_box(box, *pose) : box;
 }
 
 // The wall-load probes' pair terms: the momentum equation's own parameters, loads relative to
@@ -241,13 +300,26 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
                               const ProbeConfig& probe) {
     const CaseConfig& cfg = sim.config();
     const Real dx = Real(cfg.dx);
+    const std::optional<Pose> pose = probe_pose(sim, probe);
     switch (probe.type) {
+    case ProbeType::motion: {
+        std::vector<double> row;
+        for (int d = 0; d < D; ++d)
+            row.push_back(pose->d[d]);
+        row.push_back(pose->angle * 180 / std::numbers::pi);
+        for (int d = 0; d < D; ++d)
+            row.push_back(pose->d_rate[d]);
+        row.push_back(pose->angle_rate * 180 / std::numbers::pi);
+        return row;
+    }
     case ProbeType::pressure: {
         const Real p_min = sim.applied_pressure_floor();
         if (probe.diameter <= 0) {
             Vec<D> point;
             for (int d = 0; d < D; ++d)
                 point[d] = Real(probe.position[static_cast<std::size_t>(d)]);
+            if (pose)
+                point = moved_point(point, *pose);
             return {double(pressure_probe(P, sim.kernel(), point, p_min))};
         }
         if (probe.wall.mesh >= 0)
@@ -267,6 +339,12 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         std::optional<Real> y;
         if (probe.y)
             y = Real(*probe.y);
+        if (pose) { // along the object's own vertical: the particles seen from its frame
+            Particles<D> seen = P;
+            for (auto& x : seen.x)
+                x = body_point(x, *pose);
+            return {double(gauge_water_level(seen, dx, Real(probe.x), y))};
+        }
         return {double(gauge_water_level(P, dx, Real(probe.x), y))};
     }
     case ProbeType::force: {
@@ -274,6 +352,33 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         if (probe.moment_about)
             for (int d = 0; d < D; ++d)
                 about[d] = Real((*probe.moment_about)[static_cast<std::size_t>(d)]);
+        if (pose) { // the object's own wall particles in the region it carries
+            about = moved_point(about, *pose);
+            const Box<D> region = force_box<D>(cfg, probe);
+            std::vector<std::size_t> walls;
+            const int layers = wall_layers(sim.kernel_support(), cfg.dx);
+            for (std::size_t j = 0; j < P.size(); ++j) {
+                if (P.kind[j] != Kind::wall)
+                    continue;
+                const Vec<D> x0 = body_point(P.x[j], *pose);
+                if (!region.holds(x0))
+                    continue;
+                if (probe.wall.mesh >= 0 &&
+                    !wall_particle_of_mesh(cfg, static_cast<std::size_t>(probe.wall.mesh), layers,
+                                           to_triple<D>(x0)))
+                    continue;
+                walls.push_back(j);
+            }
+            const WallLoad load = wall_load(P, sim.kernel(), wall_load_params(sim), walls, about);
+            std::vector<double> row(load.force.begin(), load.force.begin() + D);
+            if (probe.moment_about) {
+                if (D == 3)
+                    row.insert(row.end(), load.moment.begin(), load.moment.end());
+                else
+                    row.push_back(load.moment[2]);
+            }
+            return row;
+        }
         const WallLoadParams<D> prm = wall_load_params(sim);
         const Box<D> region = force_box<D>(cfg, probe);
         WallLoad load;
@@ -330,7 +435,7 @@ std::vector<std::vector<double>> sample_probes(const Simulation<D>& sim,
         if (probe.type == ProbeType::surge_front) {
             fronts.push_back(front_columns<D>(cfg, probe));
             fronts.back().add(P, sim.owned());
-        } else if (probe.reading != SensorReading::collisions) {
+        } else if (probe.type != ProbeType::motion && probe.reading != SensorReading::collisions) {
             // (a collisions reading needs the wall contacts below, not particles)
             boxes.push_back(footprint(sim, probe));
         }

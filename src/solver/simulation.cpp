@@ -32,7 +32,8 @@ template <int D>
 std::unique_ptr<StepScheme<D>> Simulation<D>::make_scheme() {
     // References: the parameters set after this call (time-step, walls, bounds) are read
     // only by the stages.
-    const CaseParams<D> params{cfg_, kernel_, eos_, momentum_, ts_params_, walls_, bounds_, h_};
+    const CaseParams<D> params{cfg_,   kernel_,  eos_,    momentum_, ts_params_,
+                               walls_, *motion_, bounds_, h_};
     const RankCells<D> cells{grid_, ranges_, topo_};
     const RankLink rank{comm_, ranks_.plan(), between_, receive_delay_};
     switch (cfg_.scheme) {
@@ -72,6 +73,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     momentum_.wall_viscous = cfg.no_slip;
     momentum_.wall_artificial = cfg.wall_artificial_viscosity;
     momentum_.p_floor = Real(cfg.background_pressure);
+    motion_ = std::make_unique<const WallMotion<D>>(cfg, eos_, wall_layers(support, cfg.dx));
     scheme_ = make_scheme();
     neighbours_.skin = scheme_->skin();
 

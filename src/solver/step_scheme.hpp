@@ -128,6 +128,7 @@ struct CaseParams {
     const MomentumParams<D>& momentum;
     const TimeStepParams& time_step; // CFL, viscous and force limits
     const Reflector<D>& walls;       // reflective walls (none under dummy walls)
+    const WallMotion<D>& motion;     // moving wall objects (empty when every wall is fixed)
     const StateBounds<D>& bounds;    // healthy range of a fluid particle's state
     double h;                        // smoothing length [m]
 };

@@ -39,11 +39,11 @@ const double t_scale = std::sqrt(g / H); // t* = t * t_scale
 constexpr double p_scale = rho0 * g * H;
 
 // A signal p*(t*) on increasing times (a dry probe's NaN counts as zero).
-struct Signal {
+struct PressureRecord {
     std::vector<double> t, p;
 };
 
-Signal read_signal(const std::string& path, double t_factor, double p_factor) {
+PressureRecord read_signal(const std::string& path, double t_factor, double p_factor) {
     std::vector<std::pair<double, double>> rows;
     for (const auto& r : read_csv(path)) {
         const double p = std::stod(r.at(1));
@@ -52,7 +52,7 @@ Signal read_signal(const std::string& path, double t_factor, double p_factor) {
     // A digitised curve has a few points out of time order (as in its source).
     std::stable_sort(rows.begin(), rows.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
-    Signal s;
+    PressureRecord s;
     for (const auto& [t, p] : rows) {
         s.t.push_back(t);
         s.p.push_back(p);
@@ -61,7 +61,7 @@ Signal read_signal(const std::string& path, double t_factor, double p_factor) {
 }
 
 // Integral of the piecewise-linear signal from its start to every sample.
-std::vector<double> cumulative(const Signal& s) {
+std::vector<double> cumulative(const PressureRecord& s) {
     std::vector<double> c(s.t.size(), 0.0);
     for (std::size_t k = 1; k < s.t.size(); ++k)
         c[k] = c[k - 1] + 0.5 * (s.p[k] + s.p[k - 1]) * (s.t[k] - s.t[k - 1]);
@@ -69,7 +69,7 @@ std::vector<double> cumulative(const Signal& s) {
 }
 
 // Mean over [a, b] (inside the record).
-double window_mean(const Signal& s, double a, double b) {
+double window_mean(const PressureRecord& s, double a, double b) {
     REQUIRE(s.t.front() <= a);
     REQUIRE(s.t.back() >= b);
     const std::vector<double> c = cumulative(s);
@@ -78,7 +78,7 @@ double window_mean(const Signal& s, double a, double b) {
 
 // First t* >= from where the centred moving average over `width` (t*) exceeds `level`; NaN
 // if it never does.
-double first_exceeding(const Signal& s, double from, double width, double level) {
+double first_exceeding(const PressureRecord& s, double from, double width, double level) {
     const std::vector<double> c = cumulative(s);
     for (double t = from; t + width / 2 <= s.t.back(); t += 1e-3) {
         const double mean =
@@ -97,18 +97,19 @@ TEST_CASE("Zhou/Buchner wall pressure at P1 (0.16 m) agrees with De Courcy et al
         read_case(root + "/perf/impact/zhou_2d.toml",
                   {"particles.dx=0.02", "time.end_time=1.65", "output.snapshots=false"});
     const FolderRun run = run_in_temp_folder(cfg, "wall_pressure_zhou", 1);
-    const Signal sim = read_signal(run.folder + "/probes/P1_area.csv", t_scale, 1.0 / p_scale);
+    const PressureRecord sim =
+        read_signal(run.folder + "/probes/P1_area.csv", t_scale, 1.0 / p_scale);
     std::filesystem::remove_all(run.folder);
 
     const std::string data = root + "/perf/impact/data/";
-    const Signal code = read_signal(data + "decourcy2024_y160mm_sim.csv", 1.0, 1.0);
-    const Signal record = read_signal(data + "buchner2002_P1.csv", 1.0, 1.0);
+    const PressureRecord code = read_signal(data + "decourcy2024_y160mm_sim.csv", 1.0, 1.0);
+    const PressureRecord record = read_signal(data + "buchner2002_P1.csv", 1.0, 1.0);
 
     const double average = 0.010 * t_scale; // 10 ms in t*
     struct Reading {
         double piling, before, arrival;
     };
-    auto reading = [&](const Signal& s) {
+    auto reading = [&](const PressureRecord& s) {
         return Reading{window_mean(s, 3.4, 5.0), window_mean(s, 5.0, 6.0),
                        first_exceeding(s, 5.5, average, 0.75)};
     };

@@ -29,7 +29,18 @@ struct InitialParticle {
     Kind kind;
     Vec<D> x, v;
     Real rho, mass;
+    // The wall object a wall particle belongs to (wall_object_index); -1 for fluid.
+    int object = -1;
 };
+
+// Wall objects, numbered in the order their particles are laid: the tank's walls 0, then
+// every [[walls.boxes]] entry, then every [[walls.meshes]] entry (what a motion moves).
+inline int wall_object_index_of_box(std::size_t box) {
+    return 1 + static_cast<int>(box);
+}
+inline int wall_object_index_of_mesh(const CaseConfig& cfg, std::size_t mesh) {
+    return 1 + static_cast<int>(cfg.boxes.size() + mesh);
+}
 template <int D>
 using InitialSink = std::function<void(const InitialParticle<D>&)>;
 

@@ -24,6 +24,7 @@
 #include "sluice/solver/state_check.hpp"
 #include "sluice/solver/step_report.hpp"
 #include "sluice/solver/step_units.hpp"
+#include "sluice/solver/wall_motion.hpp"
 #include "sluice/tasks/balance_policy.hpp"
 #include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/decomposition.hpp"
@@ -155,6 +156,8 @@ public:
     // The momentum equation's parameters (the wall-load probes use the same pair terms).
     [[nodiscard]] const MomentumParams<D>& momentum() const { return momentum_; }
     [[nodiscard]] const CaseConfig& config() const { return cfg_; }
+    // The moving wall objects (empty when every wall is fixed).
+    [[nodiscard]] const WallMotion<D>& motion() const { return *motion_; }
     [[nodiscard]] const tasks::StepGraph& graph() const { return *graph_; }
     [[nodiscard]] int decompositions() const { return decompositions_; }
     [[nodiscard]] double h() const { return h_; }
@@ -241,7 +244,8 @@ private:
     Eos eos_;
     MomentumParams<D> momentum_;
     TimeStepParams ts_params_;
-    Reflector<D> walls_; // reflective walls
+    Reflector<D> walls_;                          // reflective walls
+    std::unique_ptr<const WallMotion<D>> motion_; // prescribed motion of wall objects
     Vec<D> domain_lo_, domain_hi_;
     StateBounds<D> bounds_; // healthy range of a fluid particle's state
     double h_ = 0;

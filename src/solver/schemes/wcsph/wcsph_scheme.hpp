@@ -1,6 +1,7 @@
 #pragma once
 // The weakly compressible scheme (docs/ARCHITECTURE.md, "The step as a graph"): its stage
 // table, the halo fields its stages send, and the stage bodies (wcsph_stages.cpp).
+#include "sluice/physics/damping_zone.hpp"
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/momentum_lanes.hpp"
 #include "sluice/physics/riemann.hpp"
@@ -61,7 +62,8 @@ private:
 
     RiemannParams<D> riemann_; // numerics.dissipation = "riemann"
     bool riemann_dissipation_ = false;
-    Real damper_nu_ = 0; // acoustic damper nu_a = alpha h c0 [m^2/s]; 0 = off
+    Real damper_nu_ = 0;                  // acoustic damper nu_a = alpha h c0 [m^2/s]; 0 = off
+    std::vector<DampingZone<D>> damping_; // [[damping_zones]], applied by the kick
     bool continuity_ = false;
     double delta_h_c0_ = 0; // delta-SPH coefficient times h c0
     DensityDiffusionParams<D> diffusion_;

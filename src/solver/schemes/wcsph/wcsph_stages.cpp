@@ -6,8 +6,11 @@
 // rows alone.
 #include "wcsph_scheme.hpp"
 
+#include "../../vec_triple.hpp"
+
 #include "sluice/physics/acoustic_damper.hpp"
 #include "sluice/physics/continuity_lanes.hpp"
+#include "sluice/physics/damping_zone.hpp"
 #include "sluice/physics/density.hpp"
 #include "sluice/physics/drift.hpp"
 #include "sluice/physics/integrator.hpp"
@@ -41,6 +44,15 @@ WcsphScheme<D>::WcsphScheme(const CaseParams<D>& params, Particles<D>& P, const 
                                 case_.momentum.wall_viscous, case_.momentum.p_floor};
     momentum_lanes_ = acceleration_uses_lanes<D>() && !riemann_dissipation_;
     damper_nu_ = Real(acoustic_damper_viscosity(cfg.acoustic_damper, case_.h, cfg.sound_speed));
+    for (const DampingZoneConfig& z : cfg.damping_zones) {
+        DampingZone<D> zone;
+        zone.start = to_vec<D>(z.start);
+        const Vec<D> along = to_vec<D>(z.end) - zone.start;
+        zone.length = along.norm();
+        zone.direction = along / zone.length;
+        zone.sigma_max = Real(z.strength);
+        damping_.push_back(zone);
+    }
     halo_ = std::make_unique<HaloFields<D>>(P_, cells_.ranges, cells_.grid, rank_.plan, skin() > 0);
 }
 
@@ -76,8 +88,11 @@ std::vector<typename WcsphScheme<D>::Stage> WcsphScheme<D>::stage_table() {
     rows.push_back({{"accel", Reach::neighbourhood, std::nullopt}, StageKind::accel});
     // The continuity rate reads the neighbours' kicked velocities; summation needs nothing.
     std::optional<HaloField> velocity;
+    // Moving walls' mid-step velocities travel too (fixed walls' are zero).
     if (continuity_)
-        velocity = HaloField{"velocity", Kind::fluid, {halo_column(P_.v_half)}};
+        velocity = HaloField{"velocity",
+                             case_.motion.empty() ? std::optional<Kind>(Kind::fluid) : std::nullopt,
+                             {halo_column(P_.v_half)}};
     rows.push_back({{"kick", Reach::self, velocity}, StageKind::kick});
     rows.push_back({{"drift", continuity_ ? Reach::neighbourhood : Reach::self, std::nullopt},
                     StageKind::drift});
@@ -210,9 +225,17 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         }
         break;
     case StageKind::walls:
-        for (CellIndex c : cells)
-            dummy_wall_state(nb, kernel, case_.eos, case_.momentum.gravity, case_.cfg.no_slip,
-                             Real(std::pow(case_.cfg.dx, D)), c, P_);
+        if (case_.motion.empty()) {
+            for (CellIndex c : cells)
+                dummy_wall_state(nb, kernel, case_.eos, case_.momentum.gravity, case_.cfg.no_slip,
+                                 Real(std::pow(case_.cfg.dx, D)), c, P_);
+        } else {
+            const MovingWalls<D> moving{case_.motion,
+                                        case_.motion.frames(clock_.time, clock_.dt).now, P_.id};
+            for (CellIndex c : cells)
+                dummy_wall_state(nb, kernel, case_.eos, case_.momentum.gravity, case_.cfg.no_slip,
+                                 Real(std::pow(case_.cfg.dx, D)), c, P_, moving);
+        }
         if (momentum_lanes_)
             for (CellIndex c : cells)
                 for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
@@ -244,6 +267,20 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                 if (P_.kind[i] == Kind::fluid)
                     P_.v_half[i] =
                         kick<D>(P_.v_half[i], P_.a[i], Real(clock_.dt_prev), Real(clock_.dt));
+        if (!damping_.empty()) // the sponge layers: exact relaxation over the step
+            for (CellIndex c : cells)
+                for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                    if (P_.kind[i] == Kind::fluid)
+                        for (const DampingZone<D>& z : damping_)
+                            P_.v_half[i] *= z.factor(P_.x[i], Real(clock_.dt));
+        if (!case_.motion.empty()) { // a moving wall's velocity at the middle of the step
+            const auto& mid = case_.motion.frames(clock_.time, clock_.dt).mid;
+            for (CellIndex c : cells)
+                for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                    if (const int k = case_.motion.object_of(P_.id[i]); k >= 0)
+                        P_.v_half[i] = from_pose_point<D>(mid[static_cast<std::size_t>(k)].velocity(
+                            case_.motion.body_point(k, P_.id[i])));
+        }
         break;
     case StageKind::drift: {
         if (clock_.steps + 1 == fail_step_ && group == 0)
@@ -255,6 +292,9 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         Real speed = 0, disp2 = 0;
         std::int64_t leaving = 0;
         std::string failure;
+        const bool moving_walls = !case_.motion.empty();
+        const std::vector<Pose>* end =
+            moving_walls ? &case_.motion.frames(clock_.time, clock_.dt).end : nullptr;
         for (CellIndex c : cells) {
             if (riemann_dissipation_)
                 riemann_continuity_rate(nb, kernel, riemann_, c, P_,
@@ -262,10 +302,11 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                                         std::span<Real>(P_.drho));
             else if (continuity_ && momentum_lanes_) // the records hold x, rho, m, wall
                 continuity_rate_lanes(nb, diffusion_, c, P_, momentum_records_.data(),
-                                      std::span<const Vec<D>>(P_.v_half), std::span<Real>(P_.drho));
+                                      std::span<const Vec<D>>(P_.v_half), std::span<Real>(P_.drho),
+                                      moving_walls);
             else if (continuity_)
                 continuity_rate(nb, kernel, diffusion_, c, P_, std::span<const Vec<D>>(P_.v_half),
-                                std::span<Real>(P_.drho));
+                                std::span<Real>(P_.drho), moving_walls);
             for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
                 // v_half stays as kicked: other groups' continuity rates read it in this stage.
                 P_.v_half_next[i] = P_.v_half[i];
@@ -273,6 +314,14 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                     P_.x_next[i] = P_.x[i];
                     P_.v_next[i] = P_.v[i];
                     P_.rho_next[i] = P_.rho[i];
+                    if (const int k = moving_walls ? case_.motion.object_of(P_.id[i]) : -1;
+                        k >= 0) { // where its object's motion puts it at the end of the step
+                        const Pose& pose = (*end)[static_cast<std::size_t>(k)];
+                        const Eigen::Vector3d& x0 = case_.motion.body_point(k, P_.id[i]);
+                        P_.x_next[i] = from_pose_point<D>(pose.position(x0));
+                        P_.v_next[i] = from_pose_point<D>(pose.velocity(x0));
+                        disp2 = std::max(disp2, (P_.x_next[i] - P_.x_ref[i]).squaredNorm());
+                    }
                     continue;
                 }
                 auto [x, v, rho] = leapfrog_drift<D>(

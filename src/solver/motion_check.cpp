@@ -1,0 +1,164 @@
+#include "sluice/solver/motion_check.hpp"
+
+#include "sluice/io/errors.hpp"
+#include "sluice/io/wall_extent.hpp"
+#include "sluice/motion/wave_theory.hpp"
+#include "sluice/solver/initial_state.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+namespace sluice {
+namespace {
+
+constexpr const char* kAxis = "xyz";
+
+struct Extent {
+    std::array<double, 3> lo{}, hi{};
+};
+
+// A wall object with a motion: its box at t = 0 (what it occupies, wall layers included) and
+// the key that gives it its motion.
+struct MovingObject {
+    Extent at_rest;
+    bool inside_tank = false; // an obstacle within a fixed tank: it must stay inside
+    int motion = -1;
+    std::string key;
+};
+
+std::vector<MovingObject> moving_objects(const CaseConfig& cfg, int layers) {
+    const double depth = layers * cfg.dx;
+    std::vector<MovingObject> out;
+    if (cfg.tank_motion >= 0) {
+        Extent tank{cfg.tank_lo, cfg.tank_hi};
+        for (int a = 0; a < 3; ++a) {
+            tank.lo[a] -= depth;
+            tank.hi[a] += depth;
+        }
+        out.push_back({tank, false, cfg.tank_motion, "walls.tank_motion"});
+    }
+    for (std::size_t b = 0; b < cfg.boxes.size(); ++b)
+        if (cfg.boxes[b].motion >= 0)
+            out.push_back({{cfg.boxes[b].lo, cfg.boxes[b].hi},
+                           cfg.tank_motion < 0,
+                           cfg.boxes[b].motion,
+                           fmt::format("walls.boxes[{}].motion", b)});
+    for (std::size_t m = 0; m < cfg.meshes.size(); ++m) {
+        const WallMesh& mesh = cfg.meshes[m];
+        if (mesh.motion < 0 || !mesh.shape)
+            continue;
+        const double reach = mesh.role == MeshRole::surface ? depth : 0.0;
+        Extent e;
+        for (int a = 0; a < 3; ++a) {
+            e.lo[a] = mesh.shape->lo()[a] - reach;
+            e.hi[a] = mesh.shape->hi()[a] + reach;
+        }
+        out.push_back({e, false, mesh.motion, fmt::format("walls.meshes[{}].motion", m)});
+    }
+    return out;
+}
+
+// The box around an extent's corners moved by a pose (the first `dim` axes).
+Extent moved(const Extent& e, const Pose& p, int dim) {
+    const double inf = std::numeric_limits<double>::infinity();
+    Extent out;
+    out.lo.fill(inf);
+    out.hi.fill(-inf);
+    for (int corner = 0; corner < (1 << dim); ++corner) {
+        Eigen::Vector3d c(e.lo[0], e.lo[1], e.lo[2]);
+        for (int a = 0; a < dim; ++a)
+            c[a] = (corner >> a) & 1 ? e.hi[a] : e.lo[a];
+        const Eigen::Vector3d x = p.position(c);
+        for (int a = 0; a < 3; ++a) {
+            out.lo[a] = std::min(out.lo[a], x[a]);
+            out.hi[a] = std::max(out.hi[a], x[a]);
+        }
+    }
+    return out;
+}
+
+std::vector<double> sample_times(const CaseConfig& cfg, const MotionLaw& law) {
+    std::vector<double> t;
+    constexpr int n = 400;
+    for (int k = 0; k <= n; ++k)
+        t.push_back(cfg.end_time * k / n);
+    if (law.kind == MotionKind::sway || law.kind == MotionKind::roll)
+        for (double s = law.start; s <= cfg.end_time; s += law.period / 16)
+            t.push_back(s);
+    for (double s : law.series_t)
+        if (s + law.start >= 0 && s + law.start <= cfg.end_time)
+            t.push_back(s + law.start);
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+} // namespace
+
+void check_motion_paths(const CaseConfig& cfg, int layers) {
+    const int dim = cfg.dimension;
+    Extent grid;
+    double size = 0;
+    for (int a = 0; a < dim; ++a) {
+        const AxisExtent e = wall_extent(cfg, static_cast<std::size_t>(a));
+        grid.lo[a] = e.lo;
+        grid.hi[a] = e.hi;
+        size = std::max(size, e.hi - e.lo);
+    }
+    const double slack = 1e-9 * size;
+    for (const MovingObject& o : moving_objects(cfg, layers)) {
+        const MotionLaw& law = cfg.motions[static_cast<std::size_t>(o.motion)];
+        const RigidMotion motion = make_motion(law);
+        for (double t : sample_times(cfg, law)) {
+            const Extent now = moved(o.at_rest, motion.pose(t), dim);
+            for (int a = 0; a < dim; ++a) {
+                if (now.lo[a] < grid.lo[a] - slack || now.hi[a] > grid.hi[a] + slack)
+                    throw CaseError(
+                        cfg.source_file, o.key,
+                        fmt::format("motion \"{}\" carries the object (wall layers included) "
+                                    "out of the domain at t = {:.4g} s: along {} it spans [{:.4g}, "
+                                    "{:.4g}] m, the domain and fixed walls [{:.4g}, {:.4g}] m; "
+                                    "enlarge [domain] or reduce the motion",
+                                    law.name, t, kAxis[a], now.lo[a], now.hi[a], grid.lo[a],
+                                    grid.hi[a]));
+                if (o.inside_tank && cfg.walls == WallModel::dummy &&
+                    (now.lo[a] < cfg.tank_lo[static_cast<std::size_t>(a)] - slack ||
+                     now.hi[a] > cfg.tank_hi[static_cast<std::size_t>(a)] + slack))
+                    throw CaseError(
+                        cfg.source_file, o.key,
+                        fmt::format("motion \"{}\" moves the object through the tank's wall at t "
+                                    "= {:.4g} s: along {} it spans [{:.4g}, {:.4g}] m, the tank "
+                                    "[{:.4g}, {:.4g}] m (a paddle's stroke must fit its travel)",
+                                    law.name, t, kAxis[a], now.lo[a], now.hi[a],
+                                    cfg.tank_lo[static_cast<std::size_t>(a)],
+                                    cfg.tank_hi[static_cast<std::size_t>(a)]));
+            }
+        }
+    }
+}
+
+std::vector<CaseWarning> motion_warnings(const CaseConfig& cfg) {
+    std::vector<CaseWarning> out;
+    for (std::size_t i = 0; i < cfg.motions.size(); ++i) {
+        const MotionLaw& law = cfg.motions[i];
+        if (law.kind != MotionKind::piston && law.kind != MotionKind::flap)
+            continue;
+        const double k = wave_number(2 * std::numbers::pi / law.wave_period, law.depth, law.g);
+        const double limit = breaking_steepness_limit(k, law.depth);
+        if (law.wave_height > limit)
+            out.push_back(
+                {fmt::format("motions[{}].wave_height", i),
+                 fmt::format("H = {:.4g} m is above the breaking limit {:.4g} m (Miche: "
+                             "0.142 L tanh kh, L = {:.4g} m, kh = {:.3g}): the waves "
+                             "will break at the paddle",
+                             law.wave_height, limit, 2 * std::numbers::pi / k, k * law.depth)});
+    }
+    return out;
+}
+
+} // namespace sluice
