@@ -18,6 +18,14 @@
 namespace sluice {
 namespace {
 
+// A box moved by a wave-maker: a paddle, whatever its thickness.
+bool is_paddle(const CaseConfig& cfg, int motion) {
+    if (motion < 0)
+        return false;
+    const MotionKind k = cfg.motions[static_cast<std::size_t>(motion)].kind;
+    return k == MotionKind::piston || k == MotionKind::flap || k == MotionKind::piston_irregular;
+}
+
 constexpr const char* kAxis = "xyz";
 
 // Lowest and highest value of up . x over the corners of the box [lo, hi].
@@ -119,9 +127,10 @@ std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& in
         if (cfg.walls != WallModel::none)
             consider(cfg.tank_hi[a] - cfg.tank_lo[a], fmt::format("the tank along {}", kAxis[a]));
         // An obstacle's size sets the flow features around it (its wake, the run-up on its
-        // face), so the same 20 particles apply.
+        // face), so the same 20 particles apply; a wave-maker's paddle is a wall, not one.
         for (std::size_t i = 0; i < cfg.boxes.size(); ++i)
-            consider(cfg.boxes[i].hi[a] - cfg.boxes[i].lo[a],
+            if (!is_paddle(cfg, cfg.boxes[i].motion))
+                consider(cfg.boxes[i].hi[a] - cfg.boxes[i].lo[a],
                      fmt::format("walls.boxes[{}] along {}", i, kAxis[a]));
     }
     if (std::isfinite(smallest) && smallest / cfg.dx < min_particles_across)

@@ -8,8 +8,9 @@
 # within 2.5 dx for the gradient, hull corners and edge points within 3.1 dx for the
 # Laplacian, hull corners for the surface test), so the gradient and the Laplacian are fitted
 # separately, each over its own selection. WCSPH-only keys (the schema's
-# applies = "wcsph") and force probes (sums of WCSPH pair forces) are dropped from each file
-# and reflective walls become dummy walls, as a user switching schemes must.
+# applies = "wcsph", whole tables such as [[motions]] included: the walls stand still) and
+# force and motion probes (sums of WCSPH pair forces, motions) are dropped from each file and
+# reflective walls become dummy walls, as a user switching schemes must.
 # Usage: projection_hull_cases.sh SLUICE_EXE SOURCE_DIR MPIEXEC
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
@@ -39,7 +40,15 @@ for line in open(src):
     if table == "walls" and k and k.group(1) == "model":
         line = 'model = "dummy"\n'
     chunks[-1].append(line)
-lines = [l for c in chunks if not any(re.match(r'\s*type\s*=\s*"force"', l) for l in c)
+# Tables of WCSPH only ([[motions]], [[damping_zones]]) go whole, and so do the probes that
+# read a motion: the case's walls stand still under the projection scheme.
+whole = {k["key"] for k in schema if k["table"] == "" and k["applies"] == "wcsph"}
+def header(c):
+    m = re.match(r"\s*\[\[?\s*([A-Za-z0-9_.]+)", c[0]) if c else None
+    return m.group(1) if m else ""
+lines = [l for c in chunks
+         if header(c) not in whole and
+         not any(re.match(r'\s*type\s*=\s*"(force|motion)"', l) for l in c)
          for l in c]
 lines.append("""
 [neighbours.gradient]

@@ -80,6 +80,15 @@ check_case ramp_mesh_2d dam_break_ramp_2d.toml --set particles.dx=0.02 --set tim
 check_case ramp_reflective_2d tests/data/mesh_loads/ramp_reflective_2d.toml \
     --set particles.dx=0.02 --set time.end_time=0.1 --set time.output_interval=0.025 \
     --set runtime.rebalance_every=25
+# Moving walls: a rolling tank (every wall particle moves, changes cells and rank) read by
+# gauges and a pressure probe in its frame, a force on its face and its motion; a piston
+# paddle (a moving box) in a flume with a damping zone.
+check_case sloshing_roll_2d sloshing_roll_2d.toml --set particles.dx=0.01 \
+    --set time.end_time=0.2 --set time.output_interval=0.05 --set runtime.rebalance_every=25 \
+    --set motions.0.ramp=0 --set motions.0.period=0.4
+check_case wave_flume_2d wave_flume_piston_2d.toml --set particles.dx=0.04 \
+    --set time.end_time=0.3 --set time.output_interval=0.075 --set runtime.rebalance_every=25 \
+    --set motions.0.ramp=0 --set motions.0.wave_period=0.6 --set motions.0.wave_height=0.02
 check_case dam_break_3d dam_break_3d.toml --set time.end_time=0.02 \
     --set time.output_interval=0.005 --set runtime.rebalance_every=15 \
     --set 'runtime.initial_decomposition="key-range"'
