@@ -7,7 +7,8 @@
 #    with exit code 2 and the reason;
 #  - a blow-up (speed above limits.max_speed) stops with exit code 3 naming particle, step,
 #    time, position and the quantity, and leaves a last snapshot even with snapshots off;
-#  - a task that throws (--debug-fail-*) stops the run with exit code 1 and its message.
+#  - a task that throws (--debug-fail-*) stops the run with exit code 1 and its message;
+#  - a rolling tank (moving walls) continues after SIGTERM with identical results.
 # Usage: checkpoint_restart.sh <sluice executable> <source dir>
 set -u
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/script_args.sh"
@@ -100,6 +101,23 @@ code=$?
 [ $code -eq 4 ] || fail "3-D SIGTERM: exit code $code, expected 4"
 "$exe" run "$case3" --restart "$work/term3" "${sets3[@]}" --threads 2 || fail "3-D restart: exit $?"
 same_results "$work/ref3" "$work/term3" "3-D SIGTERM + restart"
+
+# Moving walls: a rolling tank continues on its motion (the walls' poses are functions of time,
+# their particles part of the state) with the same results.
+caser="$src/cases/sloshing_roll_2d.toml"
+setsr=(--set particles.dx=0.01 --set time.end_time=0.15 --set time.output_interval=0.05
+       --set motions.0.ramp=0 --set motions.0.period=0.4 --quiet)
+"$exe" run "$caser" --out "$work/refr" "${setsr[@]}" --threads 1 || fail "roll reference: exit $?"
+"$exe" run "$caser" --out "$work/termr" "${setsr[@]}" --threads 1 \
+    --set checkpoint.every_steps=50 2>/dev/null &
+pid=$!
+wait_checkpoint "$work/termr"
+kill -TERM $pid
+wait $pid
+code=$?
+[ $code -eq 4 ] || fail "roll SIGTERM: exit code $code, expected 4"
+"$exe" run "$caser" --restart "$work/termr" "${setsr[@]}" --threads 2 || fail "roll restart: exit $?"
+same_results "$work/refr" "$work/termr" "rolling tank SIGTERM + restart"
 
 # Wall-clock cadence: every 0.001 minutes a checkpoint replaces the last; a run that finished
 # leaves its last one, from which the end is reached again with the same results.
