@@ -126,14 +126,25 @@ void check_motion_paths(const CaseConfig& cfg, int layers) {
                                     "enlarge [domain] or reduce the motion",
                                     law.name, t, kAxis[a], now.lo[a], now.hi[a], grid.lo[a],
                                     grid.hi[a]));
+                // An obstacle may enter a walled face's layers (a flap's foot dips into the
+                // bed as it turns), not pass out through them; an open face does not hold it.
+                const auto walled = [&](char side) {
+                    const std::string face{kAxis[a], side};
+                    return std::find(cfg.tank_faces.begin(), cfg.tank_faces.end(), face) !=
+                           cfg.tank_faces.end();
+                };
+                const double depth = layers * cfg.dx;
                 if (o.inside_tank && cfg.walls == WallModel::dummy &&
-                    (now.lo[a] < cfg.tank_lo[static_cast<std::size_t>(a)] - slack ||
-                     now.hi[a] > cfg.tank_hi[static_cast<std::size_t>(a)] + slack))
+                    ((walled('-') &&
+                      now.lo[a] < cfg.tank_lo[static_cast<std::size_t>(a)] - depth - slack) ||
+                     (walled('+') &&
+                      now.hi[a] > cfg.tank_hi[static_cast<std::size_t>(a)] + depth + slack)))
                     throw CaseError(
                         cfg.source_file, o.key,
-                        fmt::format("motion \"{}\" moves the object through the tank's wall at t "
-                                    "= {:.4g} s: along {} it spans [{:.4g}, {:.4g}] m, the tank "
-                                    "[{:.4g}, {:.4g}] m (a paddle's stroke must fit its travel)",
+                        fmt::format("motion \"{}\" moves the object out through the tank's wall "
+                                    "layers at t = {:.4g} s: along {} it spans [{:.4g}, {:.4g}] m, "
+                                    "the tank [{:.4g}, {:.4g}] m (a paddle's stroke must fit its "
+                                    "travel)",
                                     law.name, t, kAxis[a], now.lo[a], now.hi[a],
                                     cfg.tank_lo[static_cast<std::size_t>(a)],
                                     cfg.tank_hi[static_cast<std::size_t>(a)]));
