@@ -9,6 +9,7 @@
 #include "validation_support.hpp"
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ constexpr double kL = 0.4, kH = 0.2, kRho = 1000, kG = 9.81;
 // The gauges' positions along the tank (in its frame) and their probe names.
 const std::vector<double> kGaugeX{0.05, 0.10, 0.15, 0.20, 0.25, 0.30, 0.35};
 std::string gauge_name(std::size_t k) {
-    return "h" + std::to_string(k);
+    return fmt::format("h{}", k);
 }
 
 // The tank case; `motion` is the [[motions]] entry (empty: a fixed tank), `domain_hi_x` how far

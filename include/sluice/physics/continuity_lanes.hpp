@@ -24,11 +24,11 @@ namespace sluice {
 
 namespace detail {
 
-template <bool Diffuse, DensityDiffusion Form>
+template <bool Diffuse, DensityDiffusion Form, bool MovingWalls>
 SLUICE_FLATTEN void
 continuity_lanes_cell(const Neighbourhood<2>& nb, const DensityDiffusionParams<2>& diff,
                       CellIndex c, const Particles<2>& P, const MomentumNeighbour<2>* records,
-                      std::span<const Vec<2>> vel, std::span<Real> drho_out, bool moving_walls) {
+                      std::span<const Vec<2>> vel, std::span<Real> drho_out) {
     constexpr bool antuono = Diffuse && Form == DensityDiffusion::antuono;
     constexpr bool fourtakas = Diffuse && Form == DensityDiffusion::fourtakas;
     const Real4 zero{0, 0, 0, 0}, minus_two = zero - 2;
@@ -60,7 +60,7 @@ continuity_lanes_cell(const Neighbourhood<2>& nb, const DensityDiffusionParams<2
                 transpose_lanes(rho_j, m_j, unused, wall_j);
                 const Mask4 wall = wall_j != zero;
                 const Real4 dx = xi - xj, dy = yi - yj;
-                if (!moving_walls) { // fixed walls: v_j = 0 (their v_half is not exchanged)
+                if constexpr (!MovingWalls) { // fixed walls: v_j = 0 (v_half not exchanged)
                     vxj = wall ? zero : vxj;
                     vyj = wall ? zero : vyj;
                 }
@@ -107,15 +107,21 @@ void continuity_rate_lanes([[maybe_unused]] const Neighbourhood<D>& nb,
                            [[maybe_unused]] bool moving_walls = false) {
 #if defined(__AVX__) && !defined(SLUICE_SINGLE_PRECISION)
     if constexpr (D == 2) {
+        // Fixed walls compile to the loop without moving walls' arithmetic.
+        const auto cell = [&]<bool Diffuse, DensityDiffusion Form>() {
+            if (moving_walls)
+                detail::continuity_lanes_cell<Diffuse, Form, true>(nb, diff, c, P, records, vel,
+                                                                   drho_out);
+            else
+                detail::continuity_lanes_cell<Diffuse, Form, false>(nb, diff, c, P, records, vel,
+                                                                    drho_out);
+        };
         if (diff.delta_h_c0 <= 0)
-            detail::continuity_lanes_cell<false, DensityDiffusion::antuono>(
-                nb, diff, c, P, records, vel, drho_out, moving_walls);
+            cell.template operator()<false, DensityDiffusion::antuono>();
         else if (diff.form == DensityDiffusion::antuono)
-            detail::continuity_lanes_cell<true, DensityDiffusion::antuono>(
-                nb, diff, c, P, records, vel, drho_out, moving_walls);
+            cell.template operator()<true, DensityDiffusion::antuono>();
         else
-            detail::continuity_lanes_cell<true, DensityDiffusion::fourtakas>(
-                nb, diff, c, P, records, vel, drho_out, moving_walls);
+            cell.template operator()<true, DensityDiffusion::fourtakas>();
         return;
     }
 #endif

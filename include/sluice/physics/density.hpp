@@ -119,7 +119,7 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     // One loop per diffusion form (compile-time constants inside), so that no pair computes
     // or gathers what its form does not use.
-    const auto run = [&]<bool diffuse, DensityDiffusion form>() {
+    const auto run = [&]<bool diffuse, DensityDiffusion form, bool moving>() {
         constexpr bool antuono = diffuse && form == DensityDiffusion::antuono;
         constexpr bool fourtakas = diffuse && form == DensityDiffusion::fourtakas;
         for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
@@ -141,7 +141,7 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
                     for (int d = 0; d < D; ++d) {
                         // A fixed wall's v_j = 0 (its v_half is not exchanged); a moving wall's
                         // is its velocity at the middle of the step.
-                        const Real v_j = wall && !moving_walls ? Real(0) : vel[j][d];
+                        const Real v_j = wall && !moving ? Real(0) : vel[j][d];
                         dv_dx += (v_i[d] - v_j) * dx[d];
                         if constexpr (antuono)
                             g_dx += (g_i[d] + P.grad_rho[j][d]) * dx[d];
@@ -159,12 +159,19 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
             drho_out[i] = sums[0] + diff.delta_h_c0 * sums[1];
         }
     };
+    // Fixed walls compile to the loop without moving walls' arithmetic.
+    const auto walls = [&]<bool diffuse, DensityDiffusion form>() {
+        if (moving_walls)
+            run.template operator()<diffuse, form, true>();
+        else
+            run.template operator()<diffuse, form, false>();
+    };
     if (diff.delta_h_c0 <= 0)
-        run.template operator()<false, DensityDiffusion::antuono>();
+        walls.template operator()<false, DensityDiffusion::antuono>();
     else if (diff.form == DensityDiffusion::antuono)
-        run.template operator()<true, DensityDiffusion::antuono>();
+        walls.template operator()<true, DensityDiffusion::antuono>();
     else
-        run.template operator()<true, DensityDiffusion::fourtakas>();
+        walls.template operator()<true, DensityDiffusion::fourtakas>();
 }
 
 // Pressure from the equation of state for the fluid particles of cell c, and the two
