@@ -9,6 +9,7 @@
 #include "sluice/physics/timestep.hpp"
 #include "sluice/solver/built_geometry.hpp"
 #include "sluice/solver/initial_state.hpp"
+#include "sluice/solver/motion_check.hpp"
 
 #include <fmt/format.h>
 
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 
 namespace sluice {
 namespace {
@@ -207,6 +209,8 @@ CaseInfo describe_case(const CaseConfig& cfg) {
                                                                        : "stops the run"));
     ph.push_back(cfg.fixed_dt ? fmt::format("time step: fixed {:.4g} s", *cfg.fixed_dt)
                               : std::string("time step: adaptive (CFL, viscous, force limits)"));
+    for (std::string& line : motion_summary(cfg))
+        ph.push_back(std::move(line));
     info.geometry = geometry_lines(cfg, layers);
     return info;
 }

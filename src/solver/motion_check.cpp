@@ -6,6 +6,7 @@
 #include "sluice/solver/initial_state.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -168,6 +169,76 @@ std::vector<CaseWarning> motion_warnings(const CaseConfig& cfg) {
                              "0.142 L tanh kh, L = {:.4g} m, kh = {:.3g}): the waves "
                              "will break at the paddle",
                              law.wave_height, limit, 2 * std::numbers::pi / k, k * law.depth)});
+    }
+    return out;
+}
+
+std::vector<std::string> motion_summary(const CaseConfig& cfg) {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < cfg.motions.size(); ++i) {
+        const MotionLaw& law = cfg.motions[i];
+        const int m = static_cast<int>(i);
+        std::vector<std::string> moves;
+        if (cfg.tank_motion == m)
+            moves.emplace_back("the tank");
+        for (std::size_t b = 0; b < cfg.boxes.size(); ++b)
+            if (cfg.boxes[b].motion == m)
+                moves.push_back(fmt::format("walls.boxes[{}]", b));
+        for (std::size_t k = 0; k < cfg.meshes.size(); ++k)
+            if (cfg.meshes[k].motion == m)
+                moves.push_back(fmt::format("walls.meshes[{}]", k));
+        std::string what;
+        switch (law.kind) {
+        case MotionKind::sway:
+            what = fmt::format("sway, period {} s", law.period);
+            break;
+        case MotionKind::roll:
+            what = fmt::format("roll {} deg, period {} s", law.angle, law.period);
+            break;
+        case MotionKind::constant_velocity:
+            what = "constant velocity";
+            break;
+        case MotionKind::constant_acceleration:
+            what = "constant acceleration";
+            break;
+        case MotionKind::file:
+            what = fmt::format("time series, {} rows to t = {} s", law.series_t.size(),
+                               law.start + law.series_t.back());
+            break;
+        case MotionKind::piston:
+        case MotionKind::flap: {
+            const double k = wave_number(2 * std::numbers::pi / law.wave_period, law.depth, law.g);
+            const double kh = k * law.depth;
+            const bool piston = law.kind == MotionKind::piston;
+            const double stroke = law.wave_height / (piston ? piston_height_to_stroke(kh)
+                                                            : flap_height_to_stroke(kh));
+            what = fmt::format("{} wave-maker, H = {} m, T = {} s, h = {} m: L = {:.4g} m, "
+                               "kh = {:.3g}, stroke {:.4g} m{}{}",
+                               piston ? "piston" : "flap", law.wave_height, law.wave_period,
+                               law.depth, 2 * std::numbers::pi / k, kh, stroke,
+                               piston ? "" : " at the still-water level",
+                               law.second_order ? " + Madsen second order" : "");
+            break;
+        }
+        case MotionKind::piston_irregular:
+            what = fmt::format("piston wave-maker, JONSWAP Hs = {} m, Tp = {} s, gamma = {}, {} "
+                               "components, seed {}",
+                               law.hs, law.tp, law.gamma, law.components, law.seed);
+            break;
+        }
+        out.push_back(
+            fmt::format("motion \"{}\": {}{}; moves {}", law.name, what,
+                        law.start > 0 || law.ramp > 0
+                            ? fmt::format(", from t = {} s, ramp {} s", law.start, law.ramp)
+                            : std::string(),
+                        fmt::join(moves, ", ")));
+    }
+    for (std::size_t z = 0; z < cfg.damping_zones.size(); ++z) {
+        const DampingZoneConfig& d = cfg.damping_zones[z];
+        const int dim = cfg.dimension;
+        out.push_back(fmt::format("damping zone {}: from [{}] to [{}] m, sigma up to {} 1/s", z,
+                                  fmt::join(d.start.begin(), d.start.begin() + dim, ", "),
+                                  fmt::join(d.end.begin(), d.end.begin() + dim, ", "), d.strength));
     }
     return out;
 }

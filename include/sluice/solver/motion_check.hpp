@@ -7,6 +7,7 @@
 #include "sluice/io/case_config.hpp"
 #include "sluice/solver/case_check.hpp"
 
+#include <string>
 #include <vector>
 
 namespace sluice {
@@ -16,5 +17,10 @@ namespace sluice {
 void check_motion_paths(const CaseConfig& cfg, int layers);
 
 std::vector<CaseWarning> motion_warnings(const CaseConfig& cfg);
+
+// One line per motion (its kind, what it moves and, for a wave-maker, the wave number,
+// wavelength, kh and the stroke the theory gives) and per damping zone: `sluice info`'s
+// physics list.
+std::vector<std::string> motion_summary(const CaseConfig& cfg);
 
 } // namespace sluice
