@@ -15,4 +15,7 @@ std::string case_fingerprint(const toml::table& root);
 // SHA-256 (64 hex digits) of any bytes (the files a case reads besides itself).
 std::string sha256_hex(const std::string& bytes);
 
+// SHA-256 of a file's bytes (a mesh, a motion's time series).
+std::string file_sha256(const std::string& path);
+
 } // namespace sluice

@@ -61,12 +61,6 @@ SurfaceGeometry load(const Section& s, const WallMesh& m, int dimension) {
     }
 }
 
-std::string file_digest(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    return sha256_hex(bytes);
-}
-
 } // namespace
 
 ShapeReport read_shape_file(const Section& s, const CaseConfig& c, WallMesh& m) {
@@ -98,7 +92,7 @@ ShapeReport read_shape_file(const Section& s, const CaseConfig& c, WallMesh& m) 
                   "only a 2-D case cut from a triangle mesh file has a section plane");
 
     SurfaceGeometry g = load(s, m, c.dimension);
-    m.digest = file_digest(m.path);
+    m.digest = file_sha256(m.path);
     // Degenerate: smaller than a millionth of dx (area: of dx^2).
     const double tiny = c.dimension == 3 ? 1e-12 * c.dx * c.dx : 1e-6 * c.dx;
     auto shape = std::make_shared<SurfaceIndex>(std::move(g));

@@ -108,12 +108,6 @@ void read_series(const Section& s, const std::string& path, const std::string& s
                           shown, law.series_t.front()));
 }
 
-std::string file_digest(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    return sha256_hex(bytes);
-}
-
 } // namespace
 
 void read_motions(const Section& root, CaseConfig& c) {
@@ -217,7 +211,7 @@ void read_motions(const Section& root, CaseConfig& c) {
             const std::string path =
                 fs::path(*file).is_absolute() ? *file : (folder / *file).string();
             read_series(s, path, *file, c.dimension, law);
-            c.motion_digests.push_back(file_digest(path));
+            c.motion_digests.push_back(file_sha256(path));
             break;
         }
         case MotionKind::piston:

@@ -18,7 +18,7 @@
 namespace sluice {
 namespace {
 
-constexpr const char* kAxis = "xyz";
+constexpr const char* kAxisLetter = "xyz";
 
 struct Extent {
     std::array<double, 3> lo{}, hi{};
@@ -125,12 +125,12 @@ void check_motion_paths(const CaseConfig& cfg, int layers) {
                                     "out of the domain at t = {:.4g} s: along {} it spans [{:.4g}, "
                                     "{:.4g}] m, the domain and fixed walls [{:.4g}, {:.4g}] m; "
                                     "enlarge [domain] or reduce the motion",
-                                    law.name, t, kAxis[a], now.lo[a], now.hi[a], grid.lo[a],
+                                    law.name, t, kAxisLetter[a], now.lo[a], now.hi[a], grid.lo[a],
                                     grid.hi[a]));
                 // An obstacle may enter a walled face's layers (a flap's foot dips into the
                 // bed as it turns), not pass out through them; an open face does not hold it.
                 const auto walled = [&](char side) {
-                    const std::string face{kAxis[a], side};
+                    const std::string face{kAxisLetter[a], side};
                     return std::find(cfg.tank_faces.begin(), cfg.tank_faces.end(), face) !=
                            cfg.tank_faces.end();
                 };
@@ -146,7 +146,7 @@ void check_motion_paths(const CaseConfig& cfg, int layers) {
                                     "layers at t = {:.4g} s: along {} it spans [{:.4g}, {:.4g}] m, "
                                     "the tank [{:.4g}, {:.4g}] m (a paddle's stroke must fit its "
                                     "travel)",
-                                    law.name, t, kAxis[a], now.lo[a], now.hi[a],
+                                    law.name, t, kAxisLetter[a], now.lo[a], now.hi[a],
                                     cfg.tank_lo[static_cast<std::size_t>(a)],
                                     cfg.tank_hi[static_cast<std::size_t>(a)]));
             }
