@@ -131,7 +131,7 @@ std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& in
         for (std::size_t i = 0; i < cfg.boxes.size(); ++i)
             if (!is_paddle(cfg, cfg.boxes[i].motion))
                 consider(cfg.boxes[i].hi[a] - cfg.boxes[i].lo[a],
-                     fmt::format("walls.boxes[{}] along {}", i, kAxis[a]));
+                         fmt::format("walls.boxes[{}] along {}", i, kAxis[a]));
     }
     if (std::isfinite(smallest) && smallest / cfg.dx < min_particles_across)
         out.push_back({"particles.dx",

@@ -17,6 +17,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 
 namespace sluice {
 namespace {
@@ -38,11 +39,11 @@ template <int D>
 std::optional<Pose> probe_pose(const Simulation<D>& sim, const ProbeConfig& probe) {
     if (probe.frame < 0)
         return std::nullopt;
+    // A frame names a motion that moves an object (the case reader refuses an unused one).
     for (const auto& o : sim.motion().objects())
         if (o.motion == probe.frame)
             return o.rigid.pose(sim.time());
-    return make_motion(sim.config().motions[static_cast<std::size_t>(probe.frame)])
-        .pose(sim.time());
+    throw std::logic_error("probe_pose: the probe's motion moves no wall object");
 }
 
 // The box in the domain's frame that holds `body` (given where the object is at t = 0) moved
@@ -250,6 +251,28 @@ SensorFace<D> sensor_face(const ProbeConfig& probe) {
     return {point, probe.sensor_axis, probe.sensor_into_wall, Real(probe.diameter)};
 }
 
+// The wall particles a force probe on a moving object reads: the object's own, in the region
+// the probe names where the object was at t = 0 (and, for a mesh, of that mesh).
+template <int D>
+std::vector<std::size_t> carried_wall_particles(const Simulation<D>& sim, const Particles<D>& P,
+                                                const ProbeConfig& probe, const Pose& pose) {
+    const CaseConfig& cfg = sim.config();
+    const Box<D> region = force_box<D>(cfg, probe);
+    const int layers = wall_layers(sim.kernel_support(), cfg.dx);
+    std::vector<std::size_t> walls;
+    for (std::size_t j = 0; j < P.size(); ++j) {
+        if (P.kind[j] != Kind::wall)
+            continue;
+        const Vec<D> x0 = body_point(P.x[j], pose);
+        if (region.holds(x0) &&
+            (probe.wall.mesh < 0 ||
+             wall_particle_of_mesh(cfg, static_cast<std::size_t>(probe.wall.mesh), layers,
+                                   to_triple<D>(x0))))
+            walls.push_back(j);
+    }
+    return walls;
+}
+
 // Of the wall particles `walls`, only the mesh's own (wall_particle_of_mesh): a mesh's region
 // also holds other walls' layers (a floor under an obstacle, side walls beside a bed).
 template <int D>
@@ -352,33 +375,8 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         if (probe.moment_about)
             for (int d = 0; d < D; ++d)
                 about[d] = Real((*probe.moment_about)[static_cast<std::size_t>(d)]);
-        if (pose) { // the object's own wall particles in the region it carries
+        if (pose) // a moving object: the moment about the point carried with it
             about = moved_point(about, *pose);
-            const Box<D> region = force_box<D>(cfg, probe);
-            std::vector<std::size_t> walls;
-            const int layers = wall_layers(sim.kernel_support(), cfg.dx);
-            for (std::size_t j = 0; j < P.size(); ++j) {
-                if (P.kind[j] != Kind::wall)
-                    continue;
-                const Vec<D> x0 = body_point(P.x[j], *pose);
-                if (!region.holds(x0))
-                    continue;
-                if (probe.wall.mesh >= 0 &&
-                    !wall_particle_of_mesh(cfg, static_cast<std::size_t>(probe.wall.mesh), layers,
-                                           to_triple<D>(x0)))
-                    continue;
-                walls.push_back(j);
-            }
-            const WallLoad load = wall_load(P, sim.kernel(), wall_load_params(sim), walls, about);
-            std::vector<double> row(load.force.begin(), load.force.begin() + D);
-            if (probe.moment_about) {
-                if (D == 3)
-                    row.insert(row.end(), load.moment.begin(), load.moment.end());
-                else
-                    row.push_back(load.moment[2]);
-            }
-            return row;
-        }
         const WallLoadParams<D> prm = wall_load_params(sim);
         const Box<D> region = force_box<D>(cfg, probe);
         WallLoad load;
@@ -395,6 +393,9 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
                 load.force[a] += contact.force[a];
                 load.moment[a] += contact.moment[a];
             }
+        } else if (pose) { // the reader allows only this reading on a moving object
+            load = wall_load(P, sim.kernel(), prm, carried_wall_particles(sim, P, probe, *pose),
+                             about);
         } else {
             std::vector<std::size_t> walls = wall_particles_in(P, region.lo, region.hi);
             if (probe.wall.mesh >= 0)
