@@ -112,7 +112,6 @@ void read_series(const Section& s, const std::string& path, const std::string& s
 
 void read_motions(const Section& root, CaseConfig& c) {
     std::set<std::string> names;
-    const auto dim = static_cast<std::size_t>(c.dimension);
     for (const auto& s : root.entries("motions")) {
         MotionLaw law;
         const auto name = s.string("name");
@@ -254,7 +253,6 @@ void read_motions(const Section& root, CaseConfig& c) {
                 s.require(norm(*dir) > 0, "direction", "must not be the zero vector");
             law.direction = dir.value_or(Triple{1, 0, 0});
         }
-        (void)dim;
         c.motions.push_back(std::move(law));
     }
 }

@@ -65,23 +65,11 @@ std::vector<MovingObject> moving_objects(const CaseConfig& cfg, int layers) {
     return out;
 }
 
-// The box around an extent's corners moved by a pose (the first `dim` axes).
+// An extent moved by a pose (motion/rigid_motion.hpp's moved_bounds).
 Extent moved(const Extent& e, const Pose& p, int dim) {
-    const double inf = std::numeric_limits<double>::infinity();
-    Extent out;
-    out.lo.fill(inf);
-    out.hi.fill(-inf);
-    for (int corner = 0; corner < (1 << dim); ++corner) {
-        Eigen::Vector3d c(e.lo[0], e.lo[1], e.lo[2]);
-        for (int a = 0; a < dim; ++a)
-            c[a] = (corner >> a) & 1 ? e.hi[a] : e.lo[a];
-        const Eigen::Vector3d x = p.position(c);
-        for (int a = 0; a < 3; ++a) {
-            out.lo[a] = std::min(out.lo[a], x[a]);
-            out.hi[a] = std::max(out.hi[a], x[a]);
-        }
-    }
-    return out;
+    const Bounds b =
+        moved_bounds({{e.lo[0], e.lo[1], e.lo[2]}, {e.hi[0], e.hi[1], e.hi[2]}}, p, dim);
+    return {{b.lo[0], b.lo[1], b.lo[2]}, {b.hi[0], b.hi[1], b.hi[2]}};
 }
 
 std::vector<double> sample_times(const CaseConfig& cfg, const MotionLaw& law) {

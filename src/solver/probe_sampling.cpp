@@ -60,16 +60,8 @@ Box<D> moved_box(const Box<D>& body, const Pose& pose) {
         const Vec<D> d = from_pose_point<D>(pose.d);
         return {body.lo + d, body.hi + d};
     }
-    Box<D> out{Vec<D>::Constant(inf), Vec<D>::Constant(-inf)};
-    for (int corner = 0; corner < (1 << D); ++corner) {
-        Vec<D> c;
-        for (int a = 0; a < D; ++a)
-            c[a] = (corner >> a) & 1 ? body.hi[a] : body.lo[a];
-        const Vec<D> x = from_pose_point<D>(pose.position(to_pose_point<D>(c)));
-        out.lo = out.lo.cwiseMin(x);
-        out.hi = out.hi.cwiseMax(x);
-    }
-    return out;
+    const Bounds b = moved_bounds({to_pose_point<D>(body.lo), to_pose_point<D>(body.hi)}, pose, D);
+    return {from_pose_point<D>(b.lo), from_pose_point<D>(b.hi)};
 }
 
 // Where a point of the object's t = 0 placement is now, and where a point now was at t = 0.

@@ -175,3 +175,17 @@ TEST_CASE("make_motion: each kind's pose") {
         CHECK(top.norm() == doctest::Approx(0.4));
     }
 }
+
+TEST_CASE("moved_bounds: the box around a turned and shifted square") {
+    RigidMotion m;
+    m.angle = [](double) { return SignalValue{pi / 4, 0, 0}; };
+    m.translation[0] = [](double) { return SignalValue{1, 0, 0}; };
+    const Bounds b = moved_bounds({{-1, -1, 5}, {1, 1, 6}}, m.pose(0), 2);
+    const double r = std::sqrt(2.0);
+    CHECK(b.lo[0] == doctest::Approx(1 - r));
+    CHECK(b.hi[0] == doctest::Approx(1 + r));
+    CHECK(b.lo[1] == doctest::Approx(-r));
+    CHECK(b.hi[1] == doctest::Approx(r));
+    CHECK(b.lo[2] == 5); // axes past the dimension kept
+    CHECK(b.hi[2] == 6);
+}

@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <limits>
 
 namespace sluice {
 
@@ -45,6 +46,29 @@ struct Pose {
     // A direction fixed in the object (e.g. a sensor's normal), turned with it.
     [[nodiscard]] Eigen::Vector3d direction(const Eigen::Vector3d& n0) const { return R * n0; }
 };
+
+// The axis-aligned box [lo, hi] of an object's t = 0 placement moved by a pose: the box around
+// its moved corners (the first `dim` axes; the others stay as given).
+struct Bounds {
+    Eigen::Vector3d lo, hi;
+};
+inline Bounds moved_bounds(const Bounds& at_rest, const Pose& pose, int dim) {
+    const double inf = std::numeric_limits<double>::infinity();
+    Bounds out{Eigen::Vector3d::Constant(inf), Eigen::Vector3d::Constant(-inf)};
+    for (int corner = 0; corner < (1 << dim); ++corner) {
+        Eigen::Vector3d c = at_rest.lo;
+        for (int a = 0; a < dim; ++a)
+            c[a] = (corner >> a) & 1 ? at_rest.hi[a] : at_rest.lo[a];
+        const Eigen::Vector3d x = pose.position(c);
+        out.lo = out.lo.cwiseMin(x);
+        out.hi = out.hi.cwiseMax(x);
+    }
+    for (int a = dim; a < 3; ++a) {
+        out.lo[a] = at_rest.lo[a];
+        out.hi[a] = at_rest.hi[a];
+    }
+    return out;
+}
 
 struct RigidMotion {
     std::array<Signal, 3> translation{zero_signal(), zero_signal(), zero_signal()};
