@@ -73,7 +73,7 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
     momentum_.wall_viscous = cfg.no_slip;
     momentum_.wall_artificial = cfg.wall_artificial_viscosity;
     momentum_.p_floor = Real(cfg.background_pressure);
-    motion_ = std::make_unique<const WallMotion<D>>(cfg, eos_, wall_layers(support, cfg.dx));
+    motion_ = std::make_unique<WallMotion<D>>(cfg, eos_, wall_layers(support, cfg.dx));
     scheme_ = make_scheme();
     neighbours_.skin = scheme_->skin();
 
@@ -352,6 +352,8 @@ bool Simulation<D>::can_run_ahead() const {
 template <int D>
 std::string Simulation<D>::run_graphs(const tasks::StepGraph::GatePoll& gate) {
     graph_->inject_receive_delay(receive_delay_);
+    if (!motion_->empty()) // the walls' poses for this step, read by its stages
+        motion_->prepare(clock_.time, clock_.dt);
     try {
         // A throwing task does not stop the graph: its messages still go out, so every rank
         // completes the step and learns of the error in the step's agreement.

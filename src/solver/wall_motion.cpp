@@ -41,16 +41,10 @@ WallMotion<D>::WallMotion(const CaseConfig& cfg, const Eos& eos, int layers) {
 }
 
 template <int D>
-const typename WallMotion<D>::Frames& WallMotion<D>::frames(double t, double dt) const {
-    const std::lock_guard lock(mutex_);
-    if (t != t_ || dt != dt_) {
-        frames_.now = poses(t);
-        frames_.mid = poses(t + dt / 2);
-        frames_.end = poses(t + dt);
-        t_ = t;
-        dt_ = dt;
-    }
-    return frames_;
+void WallMotion<D>::prepare(double t, double dt) {
+    frames_.now = poses(t);
+    frames_.mid = poses(t + dt / 2);
+    frames_.end = poses(t + dt);
 }
 
 template <int D>

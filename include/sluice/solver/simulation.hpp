@@ -244,8 +244,8 @@ private:
     Eos eos_;
     MomentumParams<D> momentum_;
     TimeStepParams ts_params_;
-    Reflector<D> walls_;                          // reflective walls
-    std::unique_ptr<const WallMotion<D>> motion_; // prescribed motion of wall objects
+    Reflector<D> walls_;                    // reflective walls
+    std::unique_ptr<WallMotion<D>> motion_; // prescribed motion of wall objects
     Vec<D> domain_lo_, domain_hi_;
     StateBounds<D> bounds_; // healthy range of a fluid particle's state
     double h_ = 0;

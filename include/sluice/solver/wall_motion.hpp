@@ -11,7 +11,6 @@
 #include "sluice/motion/rigid_motion.hpp"
 #include "sluice/physics/eos.hpp"
 
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -56,17 +55,16 @@ public:
         return o.x0[id - o.first];
     }
 
-    // The poses at t, t + dt/2 and t + dt; computed by the first stage body that asks in a
-    // step (thread safe), the same on every rank.
-    const Frames& frames(double t, double dt) const;
+    // Sets the poses at t, t + dt/2 and t + dt for the step about to run (Simulation, before
+    // its graph), the same on every rank; the stages read them through frames().
+    void prepare(double t, double dt);
+    [[nodiscard]] const Frames& frames() const { return frames_; }
     // The poses of every object at one time (probes, output).
     [[nodiscard]] std::vector<Pose> poses(double t) const;
 
 private:
     std::vector<Object> objects_;
-    mutable std::mutex mutex_;
-    mutable double t_ = -1, dt_ = -1;
-    mutable Frames frames_;
+    Frames frames_;
 };
 
 } // namespace sluice

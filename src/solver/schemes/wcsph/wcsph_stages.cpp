@@ -230,8 +230,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                 dummy_wall_state(nb, kernel, case_.eos, case_.momentum.gravity, case_.cfg.no_slip,
                                  Real(std::pow(case_.cfg.dx, D)), c, P_);
         } else {
-            const MovingWalls<D> moving{case_.motion,
-                                        case_.motion.frames(clock_.time, clock_.dt).now, P_.id};
+            const MovingWalls<D> moving{case_.motion, case_.motion.frames().now, P_.id};
             for (CellIndex c : cells)
                 dummy_wall_state(nb, kernel, case_.eos, case_.momentum.gravity, case_.cfg.no_slip,
                                  Real(std::pow(case_.cfg.dx, D)), c, P_, moving);
@@ -274,7 +273,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                         for (const DampingZone<D>& z : damping_)
                             P_.v_half[i] *= z.factor(P_.x[i], Real(clock_.dt));
         if (!case_.motion.empty()) { // a moving wall's velocity at the middle of the step
-            const auto& mid = case_.motion.frames(clock_.time, clock_.dt).mid;
+            const auto& mid = case_.motion.frames().mid;
             for (CellIndex c : cells)
                 for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
                     if (const int k = case_.motion.object_of(P_.id[i]); k >= 0)
@@ -293,8 +292,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         std::int64_t leaving = 0;
         std::string failure;
         const bool moving_walls = !case_.motion.empty();
-        const std::vector<Pose>* end =
-            moving_walls ? &case_.motion.frames(clock_.time, clock_.dt).end : nullptr;
+        const std::vector<Pose>* end = moving_walls ? &case_.motion.frames().end : nullptr;
         for (CellIndex c : cells) {
             if (riemann_dissipation_)
                 riemann_continuity_rate(nb, kernel, riemann_, c, P_,
