@@ -58,16 +58,22 @@ def group_velocity(k, h, T):
     return c / 2 * (1 + 2 * k * h / math.sinh(2 * k * h))
 
 
-def case_text(name, kh, h, H, dx, second, alpha):
+GAUGES = (0.5, 1.0, 1.5, 1.75, 2.0, 2.25, 2.5)  # [wavelengths from the paddle]
+
+
+def case_text(name, kh, h, H, dx, second, alpha, gauges=GAUGES):
+    """The flume's case file: gauges at the given fractions of a wavelength, a zone one
+    wavelength long beyond the last gauge (+0.25 L), a run long enough for the wave to pass
+    two wavelengths and five more periods."""
     k, T = wave_number_period(kh, h)
     L = 2 * math.pi / k
-    length = 2.75 * L + L  # gauges to 2.5 L, then a zone one wavelength long
+    length = (max(gauges) + 0.25) * L + L
     top = h + max(0.3 * h, 6 * H) + 3 * dx
     c0 = 10 * math.sqrt(G * h)
     ramp = 2 * T
     end = ramp + 2 * L / group_velocity(k, h, T) + 5 * T
     paddle = 3 * dx
-    gauges = [f * L for f in (0.5, 1.0, 1.5, 1.75, 2.0, 2.25, 2.5)]
+    gauges = [f * L for f in gauges]
     probes = "".join(
         f'[[probes]]\nname = "g{i}"\ntype = "water_level"\nx = {x:.6f}\ninterval = {T / 50:.6f}\n\n'
         for i, x in enumerate(gauges))
