@@ -87,37 +87,32 @@ grep -q "stopped by SIGTERM" "$work/term.txt" || fail "SIGTERM message: $(cat "$
     --set checkpoint.every_steps=7 || fail "restart after SIGTERM: exit $?"
 same_results "$work/ref" "$work/term" "SIGTERM + restart"
 
-# 3-D: the same through Checkpoint<3>.
-case3="$src/cases/dam_break_3d.toml"
-sets3=(--set time.end_time=0.02 --set time.output_interval=0.005 --quiet)
-"$exe" run "$case3" --out "$work/ref3" "${sets3[@]}" --threads 1 || fail "3-D reference: exit $?"
-"$exe" run "$case3" --out "$work/term3" "${sets3[@]}" --threads 1 \
-    --set checkpoint.every_steps=5 2>/dev/null &
-pid=$!
-wait_checkpoint "$work/term3"
-kill -TERM $pid
-wait $pid
-code=$?
-[ $code -eq 4 ] || fail "3-D SIGTERM: exit code $code, expected 4"
-"$exe" run "$case3" --restart "$work/term3" "${sets3[@]}" --threads 2 || fail "3-D restart: exit $?"
-same_results "$work/ref3" "$work/term3" "3-D SIGTERM + restart"
+# A reference run of a case, the same run stopped by SIGTERM after its first checkpoint (every
+# EVERY steps) and continued on 2 threads: the same results.
+sigterm_restart() { # label case every set...
+    local label=$1 case=$2 every=$3 dir="$work/${1// /_}"
+    shift 3
+    "$exe" run "$case" --out "$dir.ref" "$@" --threads 1 || fail "$label reference: exit $?"
+    "$exe" run "$case" --out "$dir" "$@" --threads 1 --set checkpoint.every_steps="$every" \
+        2>/dev/null &
+    local pid=$!
+    wait_checkpoint "$dir"
+    kill -TERM $pid
+    wait $pid
+    local code=$?
+    [ $code -eq 4 ] || fail "$label SIGTERM: exit code $code, expected 4"
+    "$exe" run "$case" --restart "$dir" "$@" --threads 2 || fail "$label restart: exit $?"
+    same_results "$dir.ref" "$dir" "$label SIGTERM + restart"
+}
 
+# 3-D: the same through Checkpoint<3>.
+sigterm_restart "3-D" "$src/cases/dam_break_3d.toml" 5 \
+    --set time.end_time=0.02 --set time.output_interval=0.005 --quiet
 # Moving walls: a rolling tank continues on its motion (the walls' poses are functions of time,
 # their particles part of the state) with the same results.
-caser="$src/cases/sloshing_roll_2d.toml"
-setsr=(--set particles.dx=0.01 --set time.end_time=0.15 --set time.output_interval=0.05
-       --set motions.0.ramp=0 --set motions.0.period=0.4 --quiet)
-"$exe" run "$caser" --out "$work/refr" "${setsr[@]}" --threads 1 || fail "roll reference: exit $?"
-"$exe" run "$caser" --out "$work/termr" "${setsr[@]}" --threads 1 \
-    --set checkpoint.every_steps=50 2>/dev/null &
-pid=$!
-wait_checkpoint "$work/termr"
-kill -TERM $pid
-wait $pid
-code=$?
-[ $code -eq 4 ] || fail "roll SIGTERM: exit code $code, expected 4"
-"$exe" run "$caser" --restart "$work/termr" "${setsr[@]}" --threads 2 || fail "roll restart: exit $?"
-same_results "$work/refr" "$work/termr" "rolling tank SIGTERM + restart"
+sigterm_restart "rolling tank" "$src/cases/sloshing_roll_2d.toml" 50 \
+    --set particles.dx=0.01 --set time.end_time=0.15 --set time.output_interval=0.05 \
+    --set motions.0.ramp=0 --set motions.0.period=0.4 --quiet
 
 # Wall-clock cadence: every 0.001 minutes a checkpoint replaces the last; a run that finished
 # leaves its last one, from which the end is reached again with the same results.
