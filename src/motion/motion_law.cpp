@@ -115,6 +115,8 @@ RigidMotion make_motion(const MotionLaw& law) {
         along(m, vec(law.direction).normalized(), piston_irregular(sea, law.start, law.ramp));
         break;
     }
+    case MotionKind::free_body: // at rest: the solver integrates its motion
+        break;
     }
     return m;
 }

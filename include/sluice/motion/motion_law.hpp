@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,33 @@ enum class MotionKind {
     piston,                // piston wave-maker, regular waves (Biesel; optional 2nd order)
     flap,                  // flap wave-maker hinged at `centre`, regular waves
     piston_irregular,      // piston wave-maker, JONSWAP sea
+    free_body,             // not prescribed: the fluid's force and gravity move the object
+                           // (motion/rigid_body.hpp; solver/wall_motion.hpp integrates it)
+};
+
+// What a free body may do (motion/rigid_body.hpp).
+enum class BodyConstraint {
+    free,  // every degree of freedom (2-D: x, y and the rotation about z)
+    fixed, // nothing: the body stays where it is (its load is still computed)
+    hinge, // rotation only, about `axis` through `centre` (2-D: about z)
+    plane, // 3-D: translation in the plane normal to `axis`, rotation about `axis`
+};
+
+// A free body's mass and how it may move (MotionKind::free_body). Its initial velocity is the
+// law's `velocity`, its hinge point `centre`, its hinge axis or plane normal `axis`; it is held
+// at rest until `start`.
+struct BodyLaw {
+    using V3 = std::array<double, 3>;
+    double density = 0; // [kg/m^3]: the mass from the shape's volume; 0 when `mass` is given
+    double mass = 0;    // [kg; 2-D: kg per metre of width]; 0 when `density` is given
+    std::optional<V3> centre_of_mass; // [m] at t = 0; default: the shape's centroid
+    // About the centre of mass, world axes at t = 0, row-major [kg m^2; 2-D: kg m^2 per metre,
+    // only the zz entry is used]; default: the shape's, at uniform density.
+    std::optional<std::array<double, 9>> inertia;
+    V3 angular_velocity{}; // [rad/s] at release (2-D: z only)
+    BodyConstraint constraint = BodyConstraint::free;
+
+    bool operator==(const BodyLaw&) const = default;
 };
 
 struct MotionLaw {
@@ -51,11 +79,12 @@ struct MotionLaw {
     std::vector<double> series_t;
     std::vector<V3> series_d;
     std::vector<double> series_angle;
+    BodyLaw body; // free_body
 
     bool operator==(const MotionLaw&) const = default;
 };
 
-// The rigid motion of a law.
+// The rigid motion of a law (a free body's: at rest, its motion is integrated by the solver).
 RigidMotion make_motion(const MotionLaw& law);
 
 } // namespace sluice
