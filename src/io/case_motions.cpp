@@ -32,7 +32,14 @@ const std::vector<std::pair<std::string, MotionKind>> kKinds = {
     {"file", MotionKind::file},
     {"piston", MotionKind::piston},
     {"flap", MotionKind::flap},
-    {"piston_irregular", MotionKind::piston_irregular}};
+    {"piston_irregular", MotionKind::piston_irregular},
+    {"free_body", MotionKind::free_body}};
+
+const std::vector<std::pair<std::string, BodyConstraint>> kConstraints = {
+    {"free", BodyConstraint::free},
+    {"fixed", BodyConstraint::fixed},
+    {"hinge", BodyConstraint::hinge},
+    {"plane", BodyConstraint::plane}};
 
 const char* kind_word(MotionKind k) {
     for (const auto& [name, kind] : kKinds)
@@ -108,6 +115,87 @@ void read_series(const Section& s, const std::string& path, const std::string& s
                           shown, law.series_t.front()));
 }
 
+// A free body's keys (kind = "free_body"): its mass, inertia, initial velocity and constraint.
+void read_body(const Section& s, int dim, MotionLaw& law) {
+    BodyLaw& b = law.body;
+    const auto density = s.number("density");
+    const auto mass = s.number("mass");
+    if (!density && !mass)
+        s.fail("density", "missing required key for a free_body motion: density [kg/m^3] (the "
+                          "mass from the shape) or mass [kg]");
+    s.require(!(density && mass), "mass", "give density or mass, not both");
+    if (density) {
+        s.require(std::isfinite(*density) && *density > 0, "density",
+                  fmt::format("must be finite and > 0; got {}", *density));
+        b.density = *density;
+    }
+    if (mass) {
+        s.require(std::isfinite(*mass) && *mass > 0, "mass",
+                  fmt::format("must be finite and > 0; got {}", *mass));
+        b.mass = *mass;
+    }
+    b.centre_of_mass = s.triple("centre_of_mass");
+    if (s.node("inertia") != nullptr) {
+        std::array<double, 9> I{};
+        if (dim == 2) {
+            const double izz = s.number("inertia").value_or(0);
+            s.require(std::isfinite(izz) && izz > 0, "inertia",
+                      fmt::format("2-D: the moment of inertia about z through the centre of "
+                                  "mass [kg m^2 per metre]; must be finite and > 0, got {}",
+                                  izz));
+            I = {izz, 0, 0, 0, izz, 0, 0, 0, izz};
+        } else {
+            const Triple d = *s.triple("inertia");
+            s.require(std::isfinite(d[0] + d[1] + d[2]) && d[0] > 0 && d[1] > 0 && d[2] > 0,
+                      "inertia",
+                      fmt::format("3-D: the principal moments [Ixx, Iyy, Izz] about the centre "
+                                  "of mass [kg m^2]; each must be finite and > 0, got [{}, {}, "
+                                  "{}]",
+                                  d[0], d[1], d[2]));
+            // A rigid body's moments obey the triangle inequality (Ixx <= Iyy + Izz, ...).
+            for (int a = 0; a < 3; ++a)
+                s.require(d[static_cast<std::size_t>(a)] <=
+                              d[static_cast<std::size_t>((a + 1) % 3)] +
+                                  d[static_cast<std::size_t>((a + 2) % 3)],
+                          "inertia",
+                          fmt::format("[{}, {}, {}] is no rigid body's: each moment must be at "
+                                      "most the sum of the other two",
+                                      d[0], d[1], d[2]));
+            I = {d[0], 0, 0, 0, d[1], 0, 0, 0, d[2]};
+        }
+        b.inertia = I;
+    }
+    law.velocity = s.triple("velocity").value_or(Triple{});
+    if (dim == 2) {
+        b.angular_velocity = {0, 0, s.number("angular_velocity").value_or(0)};
+    } else {
+        b.angular_velocity = s.triple("angular_velocity").value_or(Triple{});
+    }
+    b.constraint = s.choice("constraint", BodyConstraint::free, kConstraints);
+    if (b.constraint == BodyConstraint::hinge)
+        s.require(s.node("centre") != nullptr, "centre",
+                  "missing required key for a hinged body: the hinge point [m]");
+    if (b.constraint == BodyConstraint::plane)
+        s.require(dim == 3, "constraint",
+                  "\"plane\" restricts a 3-D body to a plane; a 2-D body moves in its plane "
+                  "already (\"free\")");
+    if (dim == 3 &&
+        (b.constraint == BodyConstraint::hinge || b.constraint == BodyConstraint::plane))
+        s.require(
+            s.node("axis") != nullptr, "axis",
+            fmt::format("missing required key for constraint = \"{}\": the {} [unit "
+                        "vector]",
+                        b.constraint == BodyConstraint::hinge ? "hinge" : "plane",
+                        b.constraint == BodyConstraint::hinge ? "hinge axis" : "plane's normal"));
+    s.require(b.constraint == BodyConstraint::hinge || s.node("centre") == nullptr, "centre",
+              "is a free body's hinge point: only for constraint = \"hinge\"");
+    s.require(b.constraint == BodyConstraint::hinge || b.constraint == BodyConstraint::plane ||
+                  s.node("axis") == nullptr,
+              "axis",
+              "is a free body's hinge axis or plane normal: only for constraint = "
+              "\"hinge\" or \"plane\"");
+}
+
 } // namespace
 
 void read_motions(const Section& root, CaseConfig& c) {
@@ -133,8 +221,8 @@ void read_motions(const Section& root, CaseConfig& c) {
                   fmt::format("another motion is already called \"{}\"", law.name));
         if (s.node("kind") == nullptr)
             s.fail("kind", "missing required key (\"sway\", \"roll\", \"constant_velocity\", "
-                           "\"constant_acceleration\", \"file\", \"piston\", \"flap\" or "
-                           "\"piston_irregular\")");
+                           "\"constant_acceleration\", \"file\", \"piston\", \"flap\", "
+                           "\"piston_irregular\" or \"free_body\")");
         law.kind = s.choice("kind", MotionKind::sway, kKinds);
         const MotionKind k = law.kind;
         const char* word = kind_word(k);
@@ -143,15 +231,20 @@ void read_motions(const Section& root, CaseConfig& c) {
                       fmt::format("does not apply to a motion of kind \"{}\"", word));
         };
         const bool periodic = k == MotionKind::sway || k == MotionKind::roll;
+        const bool body = k == MotionKind::free_body;
         const bool rotates =
-            k == MotionKind::roll || k == MotionKind::file || k == MotionKind::flap;
+            k == MotionKind::roll || k == MotionKind::file || k == MotionKind::flap || body;
         const bool piston = k == MotionKind::piston || k == MotionKind::piston_irregular;
         const bool regular = k == MotionKind::piston || k == MotionKind::flap;
         only_for("amplitude", k == MotionKind::sway);
         only_for("angle", k == MotionKind::roll);
         only_for("period", periodic);
         only_for("phase", periodic);
-        only_for("velocity", k == MotionKind::constant_velocity);
+        only_for("velocity", k == MotionKind::constant_velocity || body);
+        for (const char* key :
+             {"density", "mass", "centre_of_mass", "inertia", "angular_velocity", "constraint"})
+            only_for(key, body);
+        only_for("ramp", !body);
         only_for("acceleration", k == MotionKind::constant_acceleration);
         only_for("centre", rotates);
         only_for("axis", rotates);
@@ -199,6 +292,9 @@ void read_motions(const Section& root, CaseConfig& c) {
         case MotionKind::constant_velocity:
             law.velocity = nonzero_vector("velocity", "the velocity [m/s]");
             break;
+        case MotionKind::free_body:
+            read_body(s, c.dimension, law);
+            break;
         case MotionKind::constant_acceleration:
             law.acceleration = nonzero_vector("acceleration", "the acceleration [m/s^2]");
             break;
@@ -235,7 +331,7 @@ void read_motions(const Section& root, CaseConfig& c) {
             law.period = positive("period", "the period [s]");
         law.phase = s.number("phase", 0.0);
         if (rotates) {
-            if (k != MotionKind::file && s.node("centre") == nullptr)
+            if (k != MotionKind::file && !body && s.node("centre") == nullptr)
                 s.fail("centre", fmt::format("missing required key for a {} motion: the centre "
                                              "of rotation [m]",
                                              word));
@@ -307,6 +403,32 @@ void check_motions(const Section& root, const CaseConfig& c) {
                   fmt::format("motion \"{}\" moves nothing: name it in walls.tank_motion, a "
                               "walls.boxes entry's motion or a walls.meshes entry's motion",
                               law.name));
+        if (law.kind == MotionKind::free_body) {
+            s.require(c.tank_motion != static_cast<int>(i), "kind",
+                      fmt::format("motion \"{}\" is a free body: the tank cannot be one (make the "
+                                  "body a walls.boxes or walls.meshes entry)",
+                                  law.name));
+            int objects = 0;
+            bool on_mesh = false;
+            for (const auto& m : c.meshes)
+                if (m.motion == static_cast<int>(i)) {
+                    on_mesh = true;
+                    ++objects;
+                }
+            for (const auto& b : c.boxes)
+                objects += b.motion == static_cast<int>(i) ? 1 : 0;
+            s.require(objects == 1, "name",
+                      fmt::format("free body \"{}\" is named by {} wall objects: a body is one "
+                                  "box or one mesh (give each its own [[motions]] entry)",
+                                  law.name, objects));
+            s.require(!on_mesh ||
+                          (law.body.mass > 0 && law.body.centre_of_mass && law.body.inertia),
+                      "mass",
+                      fmt::format("free body \"{}\" is a mesh: give its mass, centre_of_mass "
+                                  "and inertia (they are computed from the shape for boxes "
+                                  "only)",
+                                  law.name));
+        }
         if (law.kind == MotionKind::file) {
             const double covered = law.start + law.series_t.back();
             s.require(covered >= c.end_time, "file",

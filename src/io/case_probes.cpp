@@ -245,6 +245,7 @@ void read_probe_frame(const Section& s, const CaseConfig& c, ProbeConfig& p) {
         if (p.frame < 0)
             s.fail("frame", "missing required key for a motion probe: the [[motions]] name "
                             "whose displacement it records");
+        p.body = c.motions[static_cast<std::size_t>(p.frame)].kind == MotionKind::free_body;
         return;
     }
     if (p.type == ProbeType::force && p.frame < 0) {

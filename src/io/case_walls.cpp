@@ -149,9 +149,17 @@ void read_walls(const Section& s, CaseConfig& c) {
         for (std::size_t j = 0; j < c.boxes.size(); ++j)
             b.require(!boxes_overlap(box.lo, box.hi, c.boxes[j].lo, c.boxes[j].hi, dim, eps), "lo",
                       fmt::format("the box overlaps walls.boxes[{}]", j));
-        for (std::size_t j = 0; j < c.blocks.size(); ++j)
+        // A free body displaces the fluid it is placed in (a floating box): the blocks' sites
+        // within it are left out. A fixed box must not lie in a block.
+        const bool displaces =
+            box.motion >= 0 &&
+            c.motions[static_cast<std::size_t>(box.motion)].kind == MotionKind::free_body;
+        for (std::size_t j = 0; j < c.blocks.size() && !displaces; ++j)
             b.require(!boxes_overlap(box.lo, box.hi, c.blocks[j].lo, c.blocks[j].hi, dim, eps),
-                      "lo", fmt::format("the box overlaps the fluid of blocks[{}]", j));
+                      "lo",
+                      fmt::format("the box overlaps the fluid of blocks[{}] (only a free "
+                                  "body's box may: it displaces the fluid)",
+                                  j));
         double all = 1, deep = 1; // lattice sites of the box, and those below its shell
         for (std::size_t a = 0; a < dim; ++a) {
             const double n = std::max(1.0, std::round((box.hi[a] - box.lo[a]) / c.dx));

@@ -75,6 +75,33 @@ std::vector<T> take_vector(const std::string& b, std::size_t& pos) {
     return v;
 }
 
+void put_solver(std::string& b, const SolverState& s) {
+    put(b, s.time);
+    put(b, s.step);
+    put(b, s.dt);
+    put(b, s.dt_prev);
+    put(b, s.u_max);
+    put(b, s.limit_acoustic);
+    put(b, s.limit_viscous);
+    put(b, s.limit_force);
+    put(b, s.fluid_removed);
+    put_vector(b, s.bodies);
+}
+SolverState take_solver(const std::string& b, std::size_t& pos) {
+    SolverState s;
+    s.time = take<double>(b, pos);
+    s.step = take<std::int64_t>(b, pos);
+    s.dt = take<double>(b, pos);
+    s.dt_prev = take<double>(b, pos);
+    s.u_max = take<double>(b, pos);
+    s.limit_acoustic = take<double>(b, pos);
+    s.limit_viscous = take<double>(b, pos);
+    s.limit_force = take<double>(b, pos);
+    s.fluid_removed = take<std::int64_t>(b, pos);
+    s.bodies = take_vector<double>(b, pos);
+    return s;
+}
+
 CheckpointHeader rank0_header(const h5::World& w, const CheckpointHeader& h) {
     if (!w.parallel())
         return h;
@@ -82,7 +109,7 @@ CheckpointHeader rank0_header(const h5::World& w, const CheckpointHeader& h) {
     if (w.rank == 0) {
         put_vector(b, std::vector<char>(h.case_fingerprint.begin(), h.case_fingerprint.end()));
         put(b, h.ranks);
-        put(b, h.solver);
+        put_solver(b, h.solver);
         const OutputState& o = h.output;
         put(b, o.out_next);
         put(b, o.last_output_time);
@@ -98,7 +125,7 @@ CheckpointHeader rank0_header(const h5::World& w, const CheckpointHeader& h) {
     const auto fp = take_vector<char>(b, pos);
     out.case_fingerprint.assign(fp.begin(), fp.end());
     out.ranks = take<int>(b, pos);
-    out.solver = take<SolverState>(b, pos);
+    out.solver = take_solver(b, pos);
     OutputState& o = out.output;
     o.out_next = take<double>(b, pos);
     o.last_output_time = take<double>(b, pos);
@@ -162,6 +189,16 @@ void write_h5(const h5::World& w, const std::string& path, const CheckpointHeade
     real("limit_viscous", s.limit_viscous);
     real("limit_force", s.limit_force);
     write_attribute(f, "fluid_removed", s.fluid_removed, H5T_NATIVE_INT64, H5T_STD_I64LE);
+    if (!s.bodies.empty()) {
+        const hsize_t n_bodies = s.bodies.size();
+        const Handle space(H5Screate_simple(1, &n_bodies, nullptr), H5Sclose,
+                           "create the free bodies' dataspace");
+        const Handle attr(
+            H5Acreate2(f, "free_bodies", H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+            H5Aclose, "create attribute free_bodies");
+        h5::check(H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, s.bodies.data()),
+                  "write attribute free_bodies");
+    }
     real("out_next", c.output.out_next);
     real("last_output_time", c.output.last_output_time);
     real("wall_seconds", c.output.wall_seconds);
@@ -341,6 +378,16 @@ Checkpoint<D> read_h5(const h5::World& w, const std::string& path,
     s.fluid_removed = has_attribute(f, "fluid_removed")
                           ? read_attribute<std::int64_t>(f, "fluid_removed", H5T_NATIVE_INT64)
                           : 0;
+    if (has_attribute(f, "free_bodies")) {
+        const Handle attr(H5Aopen(f, "free_bodies", H5P_DEFAULT), H5Aclose, "open free_bodies");
+        const Handle space(H5Aget_space(attr.get()), H5Sclose, "read a dataspace");
+        const hssize_t n_bodies = H5Sget_simple_extent_npoints(space.get());
+        if (n_bodies < 0)
+            throw Refused("attribute 'free_bodies' cannot be read");
+        s.bodies.resize(static_cast<std::size_t>(n_bodies));
+        if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, s.bodies.data()) < 0)
+            throw Refused("attribute 'free_bodies' cannot be read as numbers");
+    }
     c.output.out_next = real("out_next");
     c.output.last_output_time = real("last_output_time");
     c.output.wall_seconds = real("wall_seconds");

@@ -26,16 +26,24 @@ std::string probe_csv_header(const ProbeConfig& probe, int dimension) {
             h += dimension == 3 ? ",Mx_Nm,My_Nm,Mz_Nm" : ",Mz_Nm";
         return h;
     }
-    case ProbeType::motion:
-        return dimension == 3 ? "time_s,dx_m,dy_m,dz_m,angle_deg,vx_m_s,vy_m_s,vz_m_s,omega_deg_s"
-                              : "time_s,dx_m,dy_m,angle_deg,vx_m_s,vy_m_s,omega_deg_s";
+    case ProbeType::motion: {
+        std::string h = dimension == 3
+                            ? "time_s,dx_m,dy_m,dz_m,angle_deg,vx_m_s,vy_m_s,vz_m_s,omega_deg_s"
+                            : "time_s,dx_m,dy_m,angle_deg,vx_m_s,vy_m_s,omega_deg_s";
+        if (probe.body)
+            h += dimension == 3 ? ",qw,qx,qy,qz,wx_rad_s,wy_rad_s,wz_rad_s,Fx_N,Fy_N,Fz_N,Mx_Nm,"
+                                  "My_Nm,Mz_Nm"
+                                : ",Fx_N,Fy_N,Mz_Nm";
+        return h;
+    }
     }
     return "time_s,value";
 }
 
 std::size_t probe_columns(const ProbeConfig& probe, int dimension) {
     if (probe.type == ProbeType::motion)
-        return 2 * static_cast<std::size_t>(dimension) + 2;
+        return 2 * static_cast<std::size_t>(dimension) + 2 +
+               (probe.body ? (dimension == 3 ? 13u : 3u) : 0u);
     if (probe.type != ProbeType::force)
         return 1;
     const auto d = static_cast<std::size_t>(dimension);

@@ -135,6 +135,35 @@ double profile_trace_g2(const FluidBlock& b) {
 
 namespace detail {
 
+// A free body's box displaces the fluid of the blocks it lies in (case_walls.cpp lets it).
+bool box_displaces_fluid(const CaseConfig& cfg, const WallBox& box) {
+    return box.motion >= 0 &&
+           cfg.motions[static_cast<std::size_t>(box.motion)].kind == MotionKind::free_body;
+}
+
+bool has_displacing_box(const CaseConfig& cfg) {
+    return std::any_of(cfg.boxes.begin(), cfg.boxes.end(),
+                       [&](const WallBox& b) { return box_displaces_fluid(cfg, b); });
+}
+
+// A block's lattice site that a mesh or a free body's box holds instead of fluid: within dx/2
+// of the box (its first wall layer lies dx/2 inside its faces).
+bool fluid_site_taken(const CaseConfig& cfg, const Triple& at) {
+    if (!cfg.meshes.empty() && fluid_site_taken_by_mesh(cfg, at))
+        return true;
+    const double keep = 0.5 * cfg.dx * (1 - 1e-6); // a site dx/2 from a face stays fluid
+    for (const WallBox& b : cfg.boxes) {
+        if (!box_displaces_fluid(cfg, b))
+            continue;
+        bool inside = true;
+        for (std::size_t a = 0; a < static_cast<std::size_t>(cfg.dimension); ++a)
+            inside = inside && at[a] > b.lo[a] - keep && at[a] < b.hi[a] + keep;
+        if (inside)
+            return true;
+    }
+    return false;
+}
+
 int lattice_count(double lo, double hi, double dx) {
     return std::max(0, static_cast<int>(std::round((hi - lo) / dx)));
 }
@@ -165,7 +194,7 @@ std::size_t block_particles(const CaseConfig& cfg, const FluidBlock& b) {
         n[d] = block_lattice_count(cfg, b, static_cast<int>(d));
         all *= static_cast<std::size_t>(n[d]);
     }
-    if (b.shape == BlockShape::box && cfg.meshes.empty())
+    if (b.shape == BlockShape::box && cfg.meshes.empty() && !has_displacing_box(cfg))
         return all;
     std::size_t total = 0;
     const auto count_in = [&](auto dim) {
@@ -180,7 +209,7 @@ std::size_t block_particles(const CaseConfig& cfg, const FluidBlock& b) {
             Triple at{};
             for (int d = 0; d < D; ++d)
                 at[static_cast<std::size_t>(d)] = x[d];
-            total += inside_block_shape(b, at, D) && !fluid_site_taken_by_mesh(cfg, at) ? 1 : 0;
+            total += inside_block_shape(b, at, D) && !fluid_site_taken(cfg, at) ? 1 : 0;
         });
     };
     if (cfg.dimension == 2)
@@ -297,7 +326,7 @@ ParticleId visit_fluid_blocks(const CaseConfig& cfg, const Eos& eos, ParticleId 
                 at[d] = x[d];
             if (!inside_block_shape(b, at, D))
                 return;
-            if (!cfg.meshes.empty() && fluid_site_taken_by_mesh(cfg, at))
+            if (detail::fluid_site_taken(cfg, at))
                 return;
             const double lattice_up = x[up];
             if (settle) {

@@ -2,6 +2,7 @@
 
 #include "sluice/io/errors.hpp"
 #include "sluice/io/wall_extent.hpp"
+#include "sluice/motion/rigid_body.hpp"
 #include "sluice/motion/wave_theory.hpp"
 #include "sluice/solver/initial_state.hpp"
 
@@ -206,6 +207,26 @@ std::vector<std::string> motion_summary(const CaseConfig& cfg) {
                                law.depth, 2 * std::numbers::pi / k, kh, stroke,
                                piston ? "" : " at the still-water level",
                                law.second_order ? " + Madsen second order" : "");
+            break;
+        }
+        case MotionKind::free_body: {
+            std::optional<MassProperties> shape;
+            for (const WallBox& b : cfg.boxes)
+                if (b.motion == m)
+                    shape = box_mass_properties({b.lo[0], b.lo[1], b.lo[2]},
+                                                {b.hi[0], b.hi[1], b.hi[2]}, cfg.dimension);
+            const MassProperties mp = body_mass_properties(law.body, shape);
+            const char* constraint[] = {"free", "fixed", "hinge", "plane"};
+            const int dim = cfg.dimension;
+            const std::string inertia =
+                dim == 2 ? fmt::format("{:.4g} kg m^2 per metre", mp.inertia(2, 2))
+                         : fmt::format("diag [{:.4g}, {:.4g}, {:.4g}] kg m^2", mp.inertia(0, 0),
+                                       mp.inertia(1, 1), mp.inertia(2, 2));
+            what = fmt::format("free body, mass {:.4g} kg{}, centre of mass [{:.4g}], inertia "
+                               "{}, constraint {}",
+                               mp.mass, dim == 2 ? " per metre" : "",
+                               fmt::join(mp.centre.data(), mp.centre.data() + dim, ", "), inertia,
+                               constraint[static_cast<int>(law.body.constraint)]);
             break;
         }
         case MotionKind::piston_irregular:

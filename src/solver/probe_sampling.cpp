@@ -40,9 +40,10 @@ std::optional<Pose> probe_pose(const Simulation<D>& sim, const ProbeConfig& prob
     if (probe.frame < 0)
         return std::nullopt;
     // A frame names a motion that moves an object (the case reader refuses an unused one).
-    for (const auto& o : sim.motion().objects())
-        if (o.motion == probe.frame)
-            return o.rigid.pose(sim.time());
+    const auto& objects = sim.motion().objects();
+    for (std::size_t k = 0; k < objects.size(); ++k)
+        if (objects[k].motion == probe.frame)
+            return sim.motion().poses(sim.time())[k];
     throw std::logic_error("probe_pose: the probe's motion moves no wall object");
 }
 
@@ -307,6 +308,34 @@ Box<D> sensor_contact_box(const Simulation<D>& sim, const ProbeConfig& probe) {
     return box;
 }
 
+// A free body's columns after its motion's: 3-D its orientation (a unit quaternion) and angular
+// velocity, then the fluid's force and moment (about the centre of mass) of the last step.
+template <int D>
+void append_body_columns(const WallMotion<D>& motion, int frame, const Pose& pose,
+                         std::vector<double>& row) {
+    if constexpr (D == 3) {
+        const Eigen::Quaterniond q(pose.R);
+        for (double v : {q.w(), q.x(), q.y(), q.z()})
+            row.push_back(v);
+        for (int k = 0; k < 3; ++k)
+            row.push_back(pose.omega[k]);
+    }
+    for (std::size_t b = 0; b < motion.bodies().size(); ++b) {
+        const auto& o = motion.objects()[static_cast<std::size_t>(motion.body_object(b))];
+        if (o.motion != frame)
+            continue;
+        const BodyLoad& load = motion.loads()[b];
+        for (int k = 0; k < D; ++k)
+            row.push_back(load.force[k]);
+        if constexpr (D == 3) {
+            for (int k = 0; k < 3; ++k)
+                row.push_back(load.moment[k]);
+        } else {
+            row.push_back(load.moment[2]);
+        }
+    }
+}
+
 // One row of a probe's CSV (after the time) from the particles of its footprint (a force
 // probe: its components, then its moment); a surge front from its merged columns.
 template <int D>
@@ -325,6 +354,8 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
         for (int d = 0; d < D; ++d)
             row.push_back(pose->d_rate[d]);
         row.push_back(pose->angle_rate * 180 / std::numbers::pi);
+        if (probe.body) // the body's orientation, angular velocity and the fluid's last load
+            append_body_columns<D>(sim.motion(), probe.frame, *pose, row);
         return row;
     }
     case ProbeType::pressure: {

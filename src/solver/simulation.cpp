@@ -151,6 +151,8 @@ Simulation<D>::Simulation(const CaseConfig& cfg, SimulationOptions opts,
         clock_.u_max = Real(st.u_max);
         limits_ = TimeStepLimits{st.limit_acoustic, st.limit_viscous, st.limit_force};
         removed_ = st.fluid_removed;
+        if (!motion_->bodies().empty())
+            motion_->restore_body_state(st.bodies);
     }
 
     // Neighbour lists rely on fluid particles coming first in every cell (build_list): fluid
@@ -353,7 +355,7 @@ template <int D>
 std::string Simulation<D>::run_graphs(const tasks::StepGraph::GatePoll& gate) {
     graph_->inject_receive_delay(receive_delay_);
     if (!motion_->empty()) // the walls' poses for this step, read by its stages
-        motion_->prepare(clock_.time, clock_.dt);
+        motion_->prepare(clock_.time, clock_.dt_prev, clock_.dt);
     try {
         // A throwing task does not stop the graph: its messages still go out, so every rank
         // completes the step and learns of the error in the step's agreement.
@@ -437,6 +439,7 @@ SolverState Simulation<D>::solver_state() const {
     s.limit_viscous = limits_.viscous;
     s.limit_force = limits_.force;
     s.fluid_removed = removed_;
+    s.bodies = motion_->body_state();
     return s;
 }
 

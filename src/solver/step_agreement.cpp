@@ -55,8 +55,12 @@ void Simulation<D>::post_step_report(const std::string& task_error) {
                           .leaving = leaving};
     requests_local_ = 0;
     rep.posted = tasks::clock_seconds();
-    rep.gather = comm_.start_all_gather(std::span<const std::byte>(
-        reinterpret_cast<const std::byte*>(&rep.mine), sizeof(rep.mine)));
+    // The free bodies' load shares ride in the same message (no round of their own).
+    std::vector<std::byte> bytes(sizeof(rep.mine));
+    std::memcpy(bytes.data(), &rep.mine, sizeof(rep.mine));
+    if (!motion_->bodies().empty())
+        motion_->pack_loads(results_.body_loads, bytes);
+    rep.gather = comm_.start_all_gather(bytes);
 }
 
 template <int D>
@@ -95,6 +99,15 @@ Simulation<D>::reduce_reports(const std::vector<tasks::Bytes>& all) {
     }
     if (failed.rank >= 0)
         return failed;
+    if (!motion_->bodies().empty()) {
+        std::vector<std::span<const std::byte>> shares;
+        for (const auto& b : all)
+            shares.push_back(std::span<const std::byte>(b).subspan(sizeof(StepReport)));
+        if (!motion_->agree_loads(shares))
+            throw RunError(fmt::format("step {}: the fluid's load on a free body is beyond 1e18 "
+                                       "(N or N m): the flow around it blew up",
+                                       clock_.steps + 1));
+    }
     limits_ = global;
     clock_.u_max = global_speed;
     disp2_max_ = global_disp2;

@@ -113,6 +113,9 @@ sigterm_restart "3-D" "$src/cases/dam_break_3d.toml" 5 \
 sigterm_restart "rolling tank" "$src/cases/sloshing_roll_2d.toml" 50 \
     --set particles.dx=0.01 --set time.end_time=0.15 --set time.output_interval=0.05 \
     --set motions.0.ramp=0 --set motions.0.period=0.4 --quiet
+# A free body: its state and last load travel in the checkpoint (its particles with the rest).
+sigterm_restart "free body" "$src/cases/box_drop_2d.toml" 60 \
+    --set particles.dx=0.02 --set time.end_time=0.25 --set time.output_interval=0.05 --quiet
 
 # Wall-clock cadence: every 0.001 minutes a checkpoint replaces the last; a run that finished
 # leaves its last one, from which the end is reached again with the same results.

@@ -27,12 +27,14 @@ import json, re, sys
 src, out, schema = sys.argv[1], sys.argv[2], json.load(open(sys.argv[3]))
 wcsph = {(k["table"], k["key"]) for k in schema if k["applies"] == "wcsph"}
 # Chunks from one table header to the next; force probes (WCSPH pair forces) go whole.
-table, chunks = "", [[]]
+table, chunks, raw = "", [[]], [[]]
 for line in open(src):
     m = re.match(r"\s*\[\[?\s*([A-Za-z0-9_.]+)\s*\]\]?", line)
     if m:
         table = m.group(1)
         chunks.append([])
+        raw.append([])
+    raw[-1].append(line)
     k = re.match(r"\s*([A-Za-z0-9_]+)\s*=", line)
     if k and (table, k.group(1)) in wcsph:
         continue
@@ -46,8 +48,18 @@ whole = {k["key"] for k in schema if k["table"] == "" and k["applies"] == "wcsph
 def header(c):
     m = re.match(r"\s*\[\[?\s*([A-Za-z0-9_.]+)", c[0]) if c else None
     return m.group(1) if m else ""
-lines = [l for c in chunks
-         if header(c) not in whole and
+# A free body (kind = "free_body") is no projection case's wall: its box or mesh goes whole (a
+# fixed box may not lie in the water a floating one displaced).
+def named(c, key):
+    return {m.group(1) for l in c for m in [re.match(r'\s*' + key + r'\s*=\s*"([^"]+)"', l)] if m}
+free = set()
+for c in raw:
+    if header(c) == "motions" and any(re.match(r'\s*kind\s*=\s*"free_body"', l) for l in c):
+        free |= named(c, "name")
+dropped = {i for i, c in enumerate(raw)
+           if header(c) in ("walls.boxes", "walls.meshes") and named(c, "motion") & free}
+lines = [l for i, c in enumerate(chunks)
+         if header(c) not in whole and i not in dropped and
          not any(re.match(r'\s*type\s*=\s*"(force|motion)"', l) for l in c)
          for l in c]
 lines.append("""

@@ -89,6 +89,10 @@ check_case sloshing_roll_2d sloshing_roll_2d.toml --set particles.dx=0.01 \
 check_case wave_flume_2d wave_flume_piston_2d.toml --set particles.dx=0.04 \
     --set time.end_time=0.3 --set time.output_interval=0.075 --set runtime.rebalance_every=25 \
     --set motions.0.ramp=0 --set motions.0.wave_period=0.6 --set motions.0.wave_height=0.02
+# A free body: a box falls onto the water; its load is summed over whichever ranks hold its
+# particles (exact sums: the same bits for any layout) and every rank moves it alike.
+check_case box_drop_2d box_drop_2d.toml --set particles.dx=0.02 --set time.end_time=0.3 \
+    --set time.output_interval=0.075 --set runtime.rebalance_every=25
 check_case dam_break_3d dam_break_3d.toml --set time.end_time=0.02 \
     --set time.output_interval=0.005 --set runtime.rebalance_every=15 \
     --set 'runtime.initial_decomposition="key-range"'

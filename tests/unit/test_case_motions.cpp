@@ -198,3 +198,63 @@ TEST_CASE("probes that follow a motion, damping zones") {
     expect_error(edit("end = [1.0, 0]", "end = [0.7, 0]", zone), "damping_zones[0].end");
     expect_error(edit("strength = 5", "strength = 0", zone), "damping_zones[0].strength");
 }
+
+TEST_CASE("free bodies: read with their mass and constraint; mistakes named") {
+    // The box becomes a free body of density 500; the tank stays fixed.
+    const std::string body =
+        edit("hi = [0.5, 0.6]\n", "hi = [0.5, 0.6]\nmotion = \"float\"\n",
+             edit("[time]", "[[motions]]\nname = \"float\"\nkind = \"free_body\"\ndensity = 500\n"
+                            "[time]"));
+    const CaseConfig c = read_case(write_case("body", body));
+    REQUIRE(c.motions.size() == 2);
+    CHECK(c.motions[1].kind == MotionKind::free_body);
+    CHECK(c.motions[1].body.density == 500);
+    CHECK(c.motions[1].body.constraint == BodyConstraint::free);
+    CHECK(c.boxes[0].motion == 1);
+    const std::string free_box = edit("density = 500",
+                                      "density = 500\nvelocity = [0.1, 0]\n"
+                                      "angular_velocity = 0.5",
+                                      body);
+    const CaseConfig v = read_case(write_case("body_v", free_box));
+    CHECK(v.motions[1].velocity[0] == 0.1);
+    CHECK(v.motions[1].body.angular_velocity[2] == 0.5);
+    // A free body's box may lie in the water (it displaces it); a fixed box may not.
+    const std::string in_water = edit("lo = [0.4, 0.5]", "lo = [0.4, 0.25]", body);
+    CHECK_NOTHROW(read_case(write_case("body_in_water", in_water)));
+    expect_error(edit("motion = \"float\"\n", "",
+                      edit("[[motions]]\nname = \"float\"\nkind = "
+                           "\"free_body\"\ndensity = 500\n",
+                           "", in_water)),
+                 "walls.boxes[0].lo");
+    // Mass: one of density and mass, finite and positive.
+    CHECK(contains(expect_error(edit("density = 500\n", "", body), "motions[1].density"),
+                   "density [kg/m^3]"));
+    expect_error(edit("density = 500", "density = 500\nmass = 3", body), "motions[1].mass");
+    expect_error(edit("density = 500", "mass = -1", body), "motions[1].mass");
+    expect_error(edit("density = 500", "density = 0", body), "motions[1].density");
+    expect_error(edit("density = 500", "density = 500\ninertia = -2", body), "motions[1].inertia");
+    // Keys of prescribed motions, and a ramp, are not a free body's.
+    expect_error(edit("density = 500", "density = 500\nperiod = 1", body), "motions[1].period");
+    expect_error(edit("density = 500", "density = 500\nramp = 0.1", body), "motions[1].ramp");
+    // Constraints: a hinge needs its point; a plane is 3-D only; centre belongs to a hinge.
+    expect_error(edit("density = 500", "density = 500\nconstraint = \"hinge\"", body),
+                 "motions[1].centre");
+    CHECK_NOTHROW(read_case(write_case(
+        "body_hinge", edit("density = 500",
+                           "density = 500\nconstraint = \"hinge\"\ncentre = [0.45, 0.7]", body))));
+    expect_error(edit("density = 500", "density = 500\nconstraint = \"plane\"", body),
+                 "motions[1].constraint");
+    expect_error(edit("density = 500", "density = 500\ncentre = [0.45, 0.7]", body),
+                 "motions[1].centre");
+    expect_error(edit("density = 500", "density = 500\nconstraint = \"sideways\"", body),
+                 "motions[1].constraint");
+    // One body, one wall object; never the tank.
+    expect_error(edit("\nmotion = \"float\"", "\nmotion = \"roll\"",
+                      edit("tank_motion = \"roll\"", "tank_motion = \"float\"", body)),
+                 "motions[1].kind");
+    expect_error(edit("[time]",
+                      "[[walls.boxes]]\nlo = [0.6, 0.5]\nhi = [0.7, 0.6]\n"
+                      "motion = \"float\"\n[time]",
+                      body),
+                 "motions[1].name");
+}

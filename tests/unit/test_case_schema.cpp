@@ -113,6 +113,7 @@ const std::map<std::string, std::string> kMotionSamples = {
     {"piston", "wave_height = 0.01\nwave_period = 1\ndepth = 0.4\n"},
     {"flap", "wave_height = 0.01\nwave_period = 1\ndepth = 0.4\ncentre = [1.0, 0]\n"},
     {"piston_irregular", "hs = 0.01\ntp = 1\ndepth = 0.4\n"},
+    {"free_body", "density = 500\n"},
     {"file", "file = \"absent.csv\"\n"}}; // read after every other key
 
 // The base with an entry of [[motions]] or [[damping_zones]] (which the base lacks) for a key
@@ -123,7 +124,8 @@ std::string with_entry(std::string text, const std::string& table, const std::st
     std::string entry;
     if (table == "motions") {
         std::string kind = "sway";
-        if (const auto p = when.find("kind = \""); p != std::string::npos)
+        // "not kind = ..." names the kind a key is not for: any other (sway) takes it.
+        if (const auto p = when.find("kind = \""); p != std::string::npos && p == 0)
             kind = when.substr(p + 8, when.find('"', p + 8) - (p + 8));
         entry = "[[motions]]\nname = \"m\"\nkind = \"" + kind + "\"\n" + kMotionSamples.at(kind);
         if (move_box) {
@@ -225,7 +227,9 @@ const std::set<std::string> kComputedDefaults = {"case.name",
                                                  "probes.frame",
                                                  "motions.centre",
                                                  "motions.axis",
-                                                 "motions.direction"};
+                                                 "motions.direction",
+                                                 "motions.centre_of_mass",
+                                                 "motions.inertia"};
 
 } // namespace
 

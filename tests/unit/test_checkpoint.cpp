@@ -44,7 +44,11 @@ Checkpoint<D> sample_checkpoint(std::size_t n) {
     Checkpoint<D> c;
     c.case_fingerprint = std::string(64, 'a');
     c.ranks = 3;
-    c.solver = SolverState{0.123456789, 4321, 1.0 / 3.0 * 1e-4, 2.5e-5, 1.75, 1e-4, 0.5, 2e-3};
+    c.solver =
+        SolverState{0.123456789, 4321, 1.0 / 3.0 * 1e-4, 2.5e-5, 1.75, 1e-4, 0.5, 2e-3, 0, {}};
+    // A free body's state and load (its 25 numbers, as wall_motion.hpp's body_state).
+    for (int k = 0; k < 25; ++k)
+        c.solver.bodies.push_back(1.0 / 3.0 * (k - 12));
     c.output.out_next = 0.15;
     c.output.last_output_time = 0.1;
     c.output.wall_seconds = 12.345678901;
@@ -73,6 +77,7 @@ void check_equal(const Checkpoint<D>& a, const Checkpoint<D>& b) {
     CHECK(a.case_fingerprint == b.case_fingerprint);
     CHECK(a.ranks == b.ranks);
     CHECK(a.solver.step == b.solver.step);
+    CHECK(a.solver.bodies == b.solver.bodies); // bitwise
     for (auto [x, y] : {std::pair{a.solver.time, b.solver.time},
                         {a.solver.dt, b.solver.dt},
                         {a.solver.dt_prev, b.solver.dt_prev},

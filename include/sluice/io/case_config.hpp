@@ -168,6 +168,9 @@ struct ProbeConfig {
     // The CaseConfig::motions index the probe moves with (-1 = fixed): its position, region and
     // moment point are given where the object is at t = 0; a gauge measures in its frame.
     int frame = -1;
+    // A motion probe of a free body: it also records the orientation (3-D), the angular
+    // velocity and the fluid's load on the body.
+    bool body = false;
 
     bool operator==(const ProbeConfig&) const = default;
 };

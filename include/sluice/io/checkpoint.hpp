@@ -43,6 +43,9 @@ struct SolverState {
     double u_max = 0;   // largest fluid speed of the last step (scale of particle shifting)
     double limit_acoustic = 0, limit_viscous = 0, limit_force = 0; // last step's limits
     std::int64_t fluid_removed = 0; // fluid particles that left the domain and were removed
+    // The free bodies' states and last loads (solver/wall_motion.hpp's body_state); empty
+    // without free bodies.
+    std::vector<double> bodies;
 };
 
 // The driver's output schedule and what it has written so far.

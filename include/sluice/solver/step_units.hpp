@@ -4,6 +4,7 @@
 // a step, which the step's agreement reduces over groups and ranks.
 #include "sluice/core/types.hpp"
 #include "sluice/physics/timestep.hpp"
+#include "sluice/solver/body_load_sums.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -25,13 +26,15 @@ struct StepClock {
 // Per cell group, what the last stage of a step (drift, correct) found; the step's agreement
 // (step_agreement.cpp) reduces them over the groups and the ranks.
 struct GroupResults {
-    std::vector<TimeStepLimits> limits; // time-step limits of the group's particles
-    std::vector<std::string> failure;   // the first unhealthy particle's message, or empty
-    std::vector<Real> speed;            // largest fluid speed (shifting's velocity scale)
-    std::vector<Real> disp2;            // largest squared displacement from x_ref (Verlet)
-    std::vector<std::int64_t> leaving;  // fluid particles that left the domain (to be removed)
+    std::vector<TimeStepLimits> limits;   // time-step limits of the group's particles
+    std::vector<std::string> failure;     // the first unhealthy particle's message, or empty
+    std::vector<Real> speed;              // largest fluid speed (shifting's velocity scale)
+    std::vector<Real> disp2;              // largest squared displacement from x_ref (Verlet)
+    std::vector<std::int64_t> leaving;    // fluid particles that left the domain (to be removed)
+    std::vector<BodyLoadSums> body_loads; // the fluid's load on each free body (wall_motion.hpp)
 
     void assign(std::size_t groups) {
+        body_loads.assign(groups, {});
         limits.assign(groups, {});
         failure.assign(groups, {});
         speed.assign(groups, 0.0);

@@ -65,6 +65,7 @@ SAMPLE_MOTIONS = {
     "piston": {"wave_height": 0.01, "wave_period": 1.0, "depth": 0.4},
     "flap": {"wave_height": 0.01, "wave_period": 1.0, "depth": 0.4, "centre": [0.0, 0.0]},
     "piston_irregular": {"hs": 0.01, "tp": 1.0, "depth": 0.4},
+    "free_body": {"density": 500.0},
 }
 
 # ------------------------------------------------------------------------------------------

@@ -49,6 +49,10 @@ private:
     void run_stage(int stage, int group);
     template <class K>
     void run_stage_with(const K& kernel, int stage, int group);
+    // The fluid's load on the free bodies' wall particles of a group (acceleration stage).
+    template <class K>
+    void sum_body_loads(const Neighbourhood<D>& nb, const K& kernel,
+                        const std::vector<CellIndex>& cells, BodyLoadSums& sums) const;
 
     // The units it is lent (step_scheme.hpp).
     const CaseParams<D> case_;

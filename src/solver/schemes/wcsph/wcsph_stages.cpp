@@ -9,6 +9,7 @@
 #include "../../vec_triple.hpp"
 
 #include "sluice/physics/acoustic_damper.hpp"
+#include "sluice/physics/body_load.hpp"
 #include "sluice/physics/continuity_lanes.hpp"
 #include "sluice/physics/damping_zone.hpp"
 #include "sluice/physics/density.hpp"
@@ -258,6 +259,8 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                 particle_shift(nb, kernel, sp, c, P_, std::span<Vec<D>>(P_.shift));
             }
         }
+        if (!case_.motion.bodies().empty())
+            sum_body_loads(nb, kernel, cells, results_.body_loads[static_cast<std::size_t>(group)]);
         break;
     case StageKind::kick:
         // v_half is read by other groups only in their drift, which waits for this kick.
@@ -355,6 +358,34 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         results_.failure[static_cast<std::size_t>(group)] = std::move(failure);
         break;
     }
+    }
+}
+
+template <int D>
+template <class K>
+void WcsphScheme<D>::sum_body_loads(const Neighbourhood<D>& nb, const K& kernel,
+                                    const std::vector<CellIndex>& cells, BodyLoadSums& sums) const {
+    // The free bodies' wall particles of this group: each one's share of its body's force,
+    // and its moment about the body's centre of mass where the step starts.
+    const WallMotion<D>& motion = case_.motion;
+    const auto& now = motion.frames().now;
+    sums.reset(motion.bodies().size());
+    for (CellIndex c : cells) {
+        const AdjacentCells<D> adj = nb.adjacent(c);
+        for (std::uint32_t j = nb.begin(c); j < nb.end(c); ++j) {
+            if (P_.kind[j] != Kind::wall)
+                continue;
+            const int b = motion.body_of(P_.id[j]);
+            if (b < 0)
+                continue;
+            const auto f = fluid_force_on_wall_particle(nb, kernel, case_.momentum, adj, j, P_);
+            const Pose& pose = now[static_cast<std::size_t>(motion.body_object(std::size_t(b)))];
+            const Eigen::Vector3d r = to_pose_point<D>(P_.x[j]) - (pose.centre + pose.d);
+            Eigen::Vector3d f3 = Eigen::Vector3d::Zero();
+            for (int d = 0; d < D; ++d)
+                f3[d] = f[d];
+            sums.add(static_cast<std::size_t>(b), f3, r.cross(f3));
+        }
     }
 }
 
