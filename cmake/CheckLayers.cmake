@@ -5,7 +5,8 @@
 #   core     include/sluice/core, src/core         sluice/core
 #   physics  include/sluice/physics, src/physics   sluice/core, sluice/physics
 #   geometry include/sluice/geometry, src/geometry sluice/core, sluice/geometry
-#   motion   include/sluice/motion, src/motion     sluice/core, sluice/motion
+#   motion   include/sluice/motion, src/motion     sluice/core, sluice/motion, sluice/contact
+#   contact  include/sluice/contact, src/contact   sluice/core, sluice/contact
 #   io       include/sluice/io, src/io             sluice/core, sluice/physics, sluice/geometry,
 #                                                  sluice/motion, sluice/io,
 #                                                  sluice/version.hpp (generated)
@@ -25,7 +26,7 @@
 #    (the ctest `layers_check_refuses_bad_includes` runs it on tests/data/layers/).
 
 # The layers: name, folders (relative to the root), allowed include prefixes.
-set(SLUICE_LAYERS core physics geometry motion io tasks)
+set(SLUICE_LAYERS core physics geometry motion contact io tasks)
 set(SLUICE_LAYER_core_DIRS include/sluice/core src/core)
 set(SLUICE_LAYER_core_ALLOWED sluice/core/)
 set(SLUICE_LAYER_physics_DIRS include/sluice/physics src/physics)
@@ -33,7 +34,9 @@ set(SLUICE_LAYER_physics_ALLOWED sluice/core/ sluice/physics/)
 set(SLUICE_LAYER_geometry_DIRS include/sluice/geometry src/geometry)
 set(SLUICE_LAYER_geometry_ALLOWED sluice/core/ sluice/geometry/)
 set(SLUICE_LAYER_motion_DIRS include/sluice/motion src/motion)
-set(SLUICE_LAYER_motion_ALLOWED sluice/core/ sluice/motion/)
+set(SLUICE_LAYER_motion_ALLOWED sluice/core/ sluice/motion/ sluice/contact/)
+set(SLUICE_LAYER_contact_DIRS include/sluice/contact src/contact)
+set(SLUICE_LAYER_contact_ALLOWED sluice/core/ sluice/contact/)
 set(SLUICE_LAYER_io_DIRS include/sluice/io src/io)
 set(SLUICE_LAYER_io_ALLOWED sluice/core/ sluice/physics/ sluice/geometry/ sluice/motion/ sluice/io/ sluice/version.hpp)
 set(SLUICE_LAYER_tasks_DIRS tasks)
@@ -46,6 +49,7 @@ set(SLUICE_LAYER_core_NAMESPACES "${SLUICE_NS_SHARED}")
 set(SLUICE_LAYER_physics_NAMESPACES "${SLUICE_NS_SHARED}")
 set(SLUICE_LAYER_geometry_NAMESPACES "${SLUICE_NS_SHARED}")
 set(SLUICE_LAYER_motion_NAMESPACES "${SLUICE_NS_SHARED}")
+set(SLUICE_LAYER_contact_NAMESPACES "${SLUICE_NS_SHARED}")
 set(SLUICE_LAYER_io_NAMESPACES "${SLUICE_NS_SHARED}")
 set(SLUICE_LAYER_tasks_NAMESPACES "sluice::tasks(::[a-z_]+)?|detail")
 

@@ -40,7 +40,7 @@ stages=("$@")
 asan_unit_tests=(test_case_reader test_case_check test_checkpoint test_snapshot_writer
                  test_probes test_progress test_state_check test_decomposition test_rank_layout
                  test_graph_neighbour_sums test_convex_hull_3d test_wmls test_halo_wiring
-                 test_migration test_step_agreement)
+                 test_migration test_step_agreement test_contact_world)
 asan_tests="^(cli_bad_input|$(IFS='|'; echo "${asan_unit_tests[*]}"))\$"
 asan_full_tests="^(cli_.*|mpi_.*|$(IFS='|'; echo "${asan_unit_tests[*]}"))\$"
 tsan_targets=(test_decomposition test_rank_layout test_graph_neighbour_sums test_balance_policy

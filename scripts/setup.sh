@@ -12,7 +12,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 packages=(build-essential cmake ninja-build pkg-config git
           libopenmpi-dev openmpi-bin libtbb-dev libeigen3-dev
           libhdf5-openmpi-dev hdf5-tools doctest-dev libtomlplusplus-dev libcli11-dev
-          libspdlog-dev libfmt-dev nlohmann-json3-dev libqhull-dev libssl-dev libcgal-dev procps python3 python3-numpy python3-matplotlib python3-h5py python3-pil
+          libspdlog-dev libfmt-dev nlohmann-json3-dev libqhull-dev libssl-dev libcgal-dev libbullet-dev procps python3 python3-numpy python3-matplotlib python3-h5py python3-pil
           python3-scipy bsdutils)
 # The fuzzer needs clang and its runtime (libFuzzer); other presets build with GCC.
 [ "$preset" != fuzz ] || packages+=(clang-14 libclang-rt-14-dev)

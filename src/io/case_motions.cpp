@@ -172,6 +172,8 @@ void read_body(const Section& s, int dim, MotionLaw& law) {
         b.angular_velocity = s.triple("angular_velocity").value_or(Triple{});
     }
     b.constraint = s.choice("constraint", BodyConstraint::free, kConstraints);
+    b.friction = s.number("friction", b.friction);
+    b.restitution = s.number("restitution", b.restitution);
     if (b.constraint == BodyConstraint::hinge)
         s.require(s.node("centre") != nullptr, "centre",
                   "missing required key for a hinged body: the hinge point [m]");
@@ -241,8 +243,8 @@ void read_motions(const Section& root, CaseConfig& c) {
         only_for("period", periodic);
         only_for("phase", periodic);
         only_for("velocity", k == MotionKind::constant_velocity || body);
-        for (const char* key :
-             {"density", "mass", "centre_of_mass", "inertia", "angular_velocity", "constraint"})
+        for (const char* key : {"density", "mass", "centre_of_mass", "inertia", "angular_velocity",
+                                "constraint", "friction", "restitution"})
             only_for(key, body);
         only_for("ramp", !body);
         only_for("acceleration", k == MotionKind::constant_acceleration);

@@ -123,13 +123,11 @@ Pose RigidBody::make_pose(const Eigen::Vector3d& x, const Eigen::Matrix3d& R,
     return p;
 }
 
-BodyStep RigidBody::step(double t, double dt_prev, double dt, const BodyLoad& fluid, bool loaded) {
-    const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+BodyKick RigidBody::kick(double t, double dt_prev, double dt, const BodyLoad& fluid, bool loaded) {
+    BodyKick k;
     if (!released_) {
-        if (t < start_ || !loaded || constraint_ == BodyConstraint::fixed) {
-            const Pose rest = make_pose(x_, R_, zero, zero, zero, zero);
-            return {rest, rest, rest};
-        }
+        if (t < start_ || !loaded || constraint_ == BodyConstraint::fixed)
+            return k; // held
         // Released: from the law's velocities, as the fluid starts (no step before).
         released_ = true;
         dt_prev = 0;
@@ -151,34 +149,63 @@ BodyStep RigidBody::step(double t, double dt_prev, double dt, const BodyLoad& fl
             break;
         }
     }
+    k.held = false;
+    k.dt_prev = dt_prev;
     const double w = 0.5 * (dt_prev + dt);
     const Eigen::Vector3d F = fluid.force + mass_.mass * gravity_;
-    const Eigen::Vector3d omega_old = omega_of(R_, L_half_);
+    k.omega_old = omega_of(R_, L_half_);
     // The load's effect under the constraint: the centre's acceleration A and the rate of the
     // angular momentum (about the centre; a hinge's about its axis through the hinge point).
-    Eigen::Vector3d A = F / mass_.mass, torque = fluid.moment;
+    k.A = F / mass_.mass;
+    Eigen::Vector3d torque = fluid.moment;
     if (constraint_ == BodyConstraint::plane) {
-        A -= axis_ * axis_.dot(A);
+        k.A -= axis_ * axis_.dot(k.A);
         torque = axis_ * axis_.dot(torque);
     } else if (constraint_ == BodyConstraint::hinge) {
         torque = axis_ * axis_.dot(fluid.moment + (x_ - hinge_).cross(F));
     }
-    const Eigen::Vector3d L_new = L_half_ + w * torque;
-    const Eigen::Vector3d omega = omega_of(R_, L_new);
+    k.L = L_half_ + w * torque;
+    k.omega = omega_of(R_, k.L);
+    k.v = v_half_ + w * k.A;
     // The angular acceleration at the start of the step (the walls' Adami extrapolation reads
     // the wall's acceleration): the rate of omega the torque gives.
-    const Eigen::Vector3d alpha =
-        w > 0 ? Eigen::Vector3d((omega - omega_old) / w) : Eigen::Vector3d(omega_of(R_, torque));
-    const Eigen::Matrix3d R_mid = turned(0.5 * dt * omega, R_);
-    const Eigen::Matrix3d R_end = turned(dt * omega, R_);
+    k.alpha = w > 0 ? Eigen::Vector3d((k.omega - k.omega_old) / w)
+                    : Eigen::Vector3d(omega_of(R_, torque));
+    return k;
+}
+
+ContactState RigidBody::contact_start(const BodyKick& k) const {
+    ContactState s;
+    s.x = x_;
+    s.R = R_;
+    s.held = k.held;
+    if (!k.held) {
+        s.v = k.v;
+        s.omega = k.omega;
+    }
+    return s;
+}
+
+BodyStep RigidBody::drift(const BodyKick& k, double dt, const ContactState* contact) {
+    const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+    if (k.held) {
+        const Pose rest = make_pose(x_, R_, zero, zero, zero, zero);
+        return {rest, rest, rest};
+    }
+    const Eigen::Vector3d& A = k.A;
+    const Eigen::Vector3d& alpha = k.alpha;
+    const double dt_prev = k.dt_prev;
+    Eigen::Vector3d omega = k.omega, L_new = k.L;
     BodyStep out;
     if (constraint_ == BodyConstraint::hinge) {
+        const Eigen::Matrix3d R_mid = turned(0.5 * dt * omega, R_);
+        const Eigen::Matrix3d R_end = turned(dt * omega, R_);
         // The centre turns about the hinge: its velocity and acceleration are the rotation's.
         const auto centre_at = [&](const Eigen::Matrix3d& R) {
             return Eigen::Vector3d(hinge_ + R * (mass_.centre - hinge_));
         };
         const Eigen::Vector3d r_now = x_ - hinge_;
-        const Eigen::Vector3d omega_now = omega_old + 0.5 * dt_prev * alpha;
+        const Eigen::Vector3d omega_now = k.omega_old + 0.5 * dt_prev * alpha;
         const Eigen::Vector3d a_now = alpha.cross(r_now) + omega_now.cross(omega_now.cross(r_now));
         out.now = make_pose(x_, R_, omega_now.cross(r_now), omega_now, a_now, alpha);
         const Eigen::Vector3d x_mid = centre_at(R_mid), x_end = centre_at(R_end);
@@ -187,20 +214,37 @@ BodyStep RigidBody::step(double t, double dt_prev, double dt, const BodyLoad& fl
         out.end = make_pose(x_end, R_end, omega_end.cross(x_end - hinge_), omega_end, a_now, alpha);
         v_half_ = omega.cross(0.5 * (r_now + (x_end - hinge_)));
         x_ = x_end;
+        R_ = R_end;
     } else {
-        const Eigen::Vector3d v_new = v_half_ + w * A;
-        out.now = make_pose(x_, R_, v_half_ + 0.5 * dt_prev * A, omega_old + 0.5 * dt_prev * alpha,
-                            A, alpha);
+        Eigen::Vector3d v_new = k.v;
+        Eigen::Vector3d x_end = x_ + dt * v_new;
+        Eigen::Matrix3d R_end = turned(dt * omega, R_);
+        if (contact != nullptr) { // the contacts' velocities and end placement
+            v_new = contact->v;
+            omega = contact->omega;
+            x_end = contact->x;
+            R_end = contact->R;
+            if (constraint_ == BodyConstraint::plane)
+                L_new = axis_ * (axis_.dot(mass_.inertia * axis_) * axis_.dot(omega));
+            else
+                L_new = R_ * mass_.inertia * R_.transpose() * omega;
+        }
+        const Eigen::Matrix3d R_mid = turned(0.5 * dt * omega, R_);
+        out.now = make_pose(x_, R_, v_half_ + 0.5 * dt_prev * A,
+                            k.omega_old + 0.5 * dt_prev * alpha, A, alpha);
         out.mid = make_pose(x_ + 0.5 * dt * v_new, R_mid, v_new, omega, A, alpha);
-        const Eigen::Vector3d x_end = x_ + dt * v_new;
         out.end = make_pose(x_end, R_end, v_new + 0.5 * dt * A, omega + 0.5 * dt * alpha, A, alpha);
         v_half_ = v_new;
         x_ = x_end;
+        R_ = R_end;
     }
-    R_ = R_end;
     L_half_ = L_new;
     pose_ = out.end;
     return out;
+}
+
+BodyStep RigidBody::step(double t, double dt_prev, double dt, const BodyLoad& fluid, bool loaded) {
+    return drift(kick(t, dt_prev, dt, fluid, loaded), dt, nullptr);
 }
 
 std::vector<double> RigidBody::state() const {

@@ -32,16 +32,6 @@ WallMotion<D>::WallMotion(const CaseConfig& cfg, const Eos& eos, int layers) {
         add(wall_object_index_of_mesh(cfg, m), cfg.meshes[m].motion);
     if (objects_.empty())
         return;
-    ParticleId end = 0; // of the object before
-    for (Object& o : objects_) {
-        if (o.x0.empty()) // holds no particle: an empty run where the next one starts
-            o.first = end;
-        if (o.first < end)
-            throw std::logic_error("WallMotion: moving objects not laid in id order");
-        firsts_.push_back(o.first);
-        end = o.first + o.x0.size();
-    }
-    first_moving_ = firsts_.front();
     // Free bodies: their mass properties (from a box's shape where the law leaves them out).
     const Eigen::Vector3d g(cfg.gravity[0], cfg.gravity[1], cfg.gravity[2]);
     for (std::size_t k = 0; k < objects_.size(); ++k) {
@@ -65,6 +55,54 @@ WallMotion<D>::WallMotion(const CaseConfig& cfg, const Eos& eos, int layers) {
         body_objects_.push_back(static_cast<int>(k));
     }
     loads_.assign(bodies_.size(), {});
+    // Contact: the bodies of boxes that move freely or in a plane along a world axis, against
+    // the fixed tank's walled faces, the fixed boxes and each other.
+    std::vector<ContactBody> contact_bodies;
+    contact_index_.assign(bodies_.size(), -1);
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const RigidBody& body = bodies_[b];
+        const bool axis_aligned = body.axis().cwiseAbs().maxCoeff() == 1.0;
+        const bool takes_part =
+            body_bounds_[b] && (body.constraint() == BodyConstraint::free ||
+                                (body.constraint() == BodyConstraint::plane && axis_aligned));
+        if (!takes_part)
+            continue;
+        const MotionLaw& law = cfg.motions[static_cast<std::size_t>(
+            objects_[static_cast<std::size_t>(body_objects_[b])].motion)];
+        ContactBody c;
+        c.box = ContactBox{body_bounds_[b]->lo, body_bounds_[b]->hi};
+        c.mass = body.mass().mass;
+        c.centre = body.mass().centre;
+        c.inertia = body.mass().inertia.diagonal();
+        c.friction = law.body.friction;
+        c.restitution = law.body.restitution;
+        c.planar = body.constraint() == BodyConstraint::plane;
+        c.normal = body.axis();
+        contact_index_[b] = static_cast<int>(contact_bodies.size());
+        contact_bodies.push_back(c);
+    }
+    if (!contact_bodies.empty()) {
+        std::vector<ContactPlane> planes;
+        if (cfg.tank_motion < 0 && cfg.walls == WallModel::dummy)
+            for (const std::string& face : cfg.tank_faces) {
+                const auto a = static_cast<std::size_t>(face[0] - 'x');
+                if (a >= static_cast<std::size_t>(D))
+                    continue;
+                ContactPlane p;
+                p.normal = Eigen::Vector3d::Zero();
+                const bool low = face[1] == '-';
+                p.normal[static_cast<Eigen::Index>(a)] = low ? 1.0 : -1.0;
+                p.offset = low ? cfg.tank_lo[a] : -cfg.tank_hi[a];
+                planes.push_back(p);
+            }
+        std::vector<ContactBox> fixed;
+        for (const WallBox& box : cfg.boxes)
+            if (box.motion < 0)
+                fixed.push_back({Eigen::Vector3d(box.lo[0], box.lo[1], box.lo[2]),
+                                 Eigen::Vector3d(box.hi[0], box.hi[1], box.hi[2])});
+        contact_ = std::make_unique<ContactWorld>(D, std::move(planes), std::move(fixed),
+                                                  std::move(contact_bodies));
+    }
     tank_lo_ = cfg.tank_lo;
     tank_hi_ = cfg.tank_hi;
     tank_faces_ = cfg.tank_faces;
@@ -80,6 +118,17 @@ WallMotion<D>::WallMotion(const CaseConfig& cfg, const Eos& eos, int layers) {
                 o.x0.push_back(to_pose_point<D>(q.x));
             }
     });
+    // The objects' id runs, for object_of's bisection.
+    ParticleId end = 0; // of the object before
+    for (Object& o : objects_) {
+        if (o.x0.empty()) // holds no particle: an empty run where the next one starts
+            o.first = end;
+        if (o.first < end)
+            throw std::logic_error("WallMotion: moving objects not laid in id order");
+        firsts_.push_back(o.first);
+        end = o.first + o.x0.size();
+    }
+    first_moving_ = firsts_.front();
 }
 
 template <int D>
@@ -87,11 +136,28 @@ void WallMotion<D>::prepare(double t, double dt_prev, double dt) {
     frames_.now.clear();
     frames_.mid.clear();
     frames_.end.clear();
+    // The bodies' kicks, then contact between them and the walls, then their drifts.
+    std::vector<BodyKick> kicks;
+    kicks.reserve(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        kicks.push_back(bodies_[b].kick(t, dt_prev, dt, loads_[b], loads_known_));
+    std::vector<ContactState> after;
+    if (contact_) {
+        std::vector<ContactState> start;
+        for (std::size_t b = 0; b < bodies_.size(); ++b)
+            if (contact_index_[b] >= 0)
+                start.push_back(bodies_[b].contact_start(kicks[b]));
+        after = contact_->step(start, dt);
+    }
     for (const Object& o : objects_) {
         if (o.body >= 0) {
             const auto b = static_cast<std::size_t>(o.body);
-            const BodyStep s = bodies_[b].step(t, dt_prev, dt, loads_[b], loads_known_);
-            if (body_bounds_[b])
+            const int c = contact_index_[b];
+            const ContactState* touched = c >= 0 && after[static_cast<std::size_t>(c)].resolved
+                                              ? &after[static_cast<std::size_t>(c)]
+                                              : nullptr;
+            const BodyStep s = bodies_[b].drift(kicks[b], dt, touched);
+            if (body_bounds_[b] && c < 0)
                 check_within_tank(o.name, moved_bounds(*body_bounds_[b], s.end, D), t + dt);
             frames_.now.push_back(s.now);
             frames_.mid.push_back(s.mid);

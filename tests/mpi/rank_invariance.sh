@@ -93,6 +93,9 @@ check_case wave_flume_2d wave_flume_piston_2d.toml --set particles.dx=0.04 \
 # particles (exact sums: the same bits for any layout) and every rank moves it alike.
 check_case box_drop_2d box_drop_2d.toml --set particles.dx=0.02 --set time.end_time=0.3 \
     --set time.output_interval=0.075 --set runtime.rebalance_every=25
+# Contact: boxes fall onto the floor and onto each other; every rank steps the same Bullet
+# world.
+check_case boxes_contact_2d tests/data/boxes_contact_2d.toml --set runtime.rebalance_every=25
 check_case dam_break_3d dam_break_3d.toml --set time.end_time=0.02 \
     --set time.output_interval=0.005 --set runtime.rebalance_every=15 \
     --set 'runtime.initial_decomposition="key-range"'

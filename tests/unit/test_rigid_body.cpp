@@ -27,7 +27,6 @@ namespace {
 
 MotionLaw body_law(BodyConstraint c = BodyConstraint::free) {
     MotionLaw law;
-    law.name = "b";
     law.kind = MotionKind::free_body;
     law.body.density = 500;
     law.body.constraint = c;

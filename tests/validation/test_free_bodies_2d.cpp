@@ -172,3 +172,26 @@ TEST_CASE("Free fall in air: g t^2/2 to round-off") {
     }
     CHECK(worst < 1e-13);
 }
+
+TEST_CASE("Several bodies: each is moved by its own load") {
+    // Three boxes of density 500 at their draft, side by side: each one's load is its own
+    // buoyancy (its weight, 10 N/m, within 5 % after 0.05 s), not another's.
+    std::string text = floating_case(0.01, 1.0, 0.25, false, 0.05);
+    const std::string box =
+        "[[walls.boxes]]\nlo = [0.4, 0.25]\nhi = [0.6, 0.35]\nmotion = \"box\"\n";
+    text.replace(text.find(box), box.size(),
+                 "[[walls.boxes]]\nlo = [0.05, 0.25]\nhi = [0.25, 0.35]\nmotion = \"a\"\n" + box +
+                     "[[walls.boxes]]\nlo = [0.75, 0.25]\nhi = [0.95, 0.35]\nmotion = \"c\"\n");
+    text += "[[motions]]\nname = \"a\"\nkind = \"free_body\"\ndensity = 500\n"
+            "[[motions]]\nname = \"c\"\nkind = \"free_body\"\ndensity = 500\n";
+    const CaseConfig cfg = read_case_text(text, "three.toml");
+    Simulation<2> sim(cfg);
+    while (sim.time() < cfg.end_time)
+        sim.step();
+    REQUIRE(sim.motion().bodies().size() == 3);
+    for (std::size_t b = 0; b < 3; ++b) {
+        const double weight = sim.motion().bodies()[b].mass().mass * 9.81;
+        CHECK(sim.motion().loads()[b].force.y() == doctest::Approx(weight).epsilon(0.05));
+        CHECK(std::abs(sim.motion().bodies()[b].centre().y() - 0.3) < 0.002);
+    }
+}

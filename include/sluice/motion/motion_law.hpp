@@ -47,6 +47,9 @@ struct BodyLaw {
     std::optional<std::array<double, 9>> inertia;
     V3 angular_velocity{}; // [rad/s] at release (2-D: z only)
     BodyConstraint constraint = BodyConstraint::free;
+    // Contact with walls and other bodies (contact/contact_world.hpp): Coulomb friction and
+    // restitution coefficients (a pair of surfaces takes the product of the two; walls are 1).
+    double friction = 0.5, restitution = 0;
 
     bool operator==(const BodyLaw&) const = default;
 };

@@ -15,6 +15,7 @@
 // Constraints project the load: a hinge turns about its axis through a fixed point, a planar
 // body (every 2-D body) translates in the plane and turns about its normal, a fixed one stays.
 // Pure numerics in double; no particle, rank or thread is known here.
+#include "sluice/contact/contact_world.hpp"
 #include "sluice/motion/motion_law.hpp"
 #include "sluice/motion/rigid_motion.hpp"
 
@@ -49,6 +50,17 @@ struct BodyStep {
     Pose now, mid, end;
 };
 
+// A step's kick (RigidBody::kick): the half-step velocity and angular velocity it gives, the
+// angular momentum, the accelerations the load gives, and the angular velocity before it.
+struct BodyKick {
+    bool held = true; // at rest this step (before its start, before any load, or fixed)
+    double dt_prev = 0;
+    Eigen::Vector3d v = Eigen::Vector3d::Zero(), omega = Eigen::Vector3d::Zero();
+    Eigen::Vector3d L = Eigen::Vector3d::Zero();
+    Eigen::Vector3d A = Eigen::Vector3d::Zero(), alpha = Eigen::Vector3d::Zero();
+    Eigen::Vector3d omega_old = Eigen::Vector3d::Zero();
+};
+
 class RigidBody {
 public:
     RigidBody() = default;
@@ -62,6 +74,14 @@ public:
     // start, and while no load is known yet (`loaded` false: the first step of a run, whose
     // wall pressures are not yet extrapolated).
     BodyStep step(double t, double dt_prev, double dt, const BodyLoad& fluid, bool loaded = true);
+    // The same in two halves, so that contact (contact/contact_world.hpp) can act between
+    // them: the kick, the state contact starts from, and the drift, which takes the contacts'
+    // velocities and end placement when `contact` is given (free and planar bodies only).
+    BodyKick kick(double t, double dt_prev, double dt, const BodyLoad& fluid, bool loaded = true);
+    [[nodiscard]] ContactState contact_start(const BodyKick& k) const;
+    BodyStep drift(const BodyKick& k, double dt, const ContactState* contact);
+    [[nodiscard]] BodyConstraint constraint() const { return constraint_; }
+    [[nodiscard]] const Eigen::Vector3d& axis() const { return axis_; }
 
     // The pose where the last step left it (at rest at t = 0 before the first step).
     [[nodiscard]] const Pose& pose() const { return pose_; }

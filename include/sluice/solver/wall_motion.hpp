@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -96,6 +97,8 @@ public:
     bool agree_loads(const std::vector<std::span<const std::byte>>& ranks);
     // The loads the last step's agreement gave (force; moment about the centre of mass).
     [[nodiscard]] const std::vector<BodyLoad>& loads() const { return loads_; }
+    // Contact points of the last step (0 without contact).
+    [[nodiscard]] int contacts() const { return contact_ ? contact_->last_contacts() : 0; }
 
     // The bodies' state and loads for a checkpoint, and back (bitwise).
     [[nodiscard]] std::vector<double> body_state() const;
@@ -113,6 +116,10 @@ private:
     // Where a body's box is at rest, and the tank's walled faces: contact between a body and a
     // wall is not modelled, so prepare() stops the run when a body would cross a tank face.
     std::vector<std::optional<Bounds>> body_bounds_;
+    // Contact between the bodies of boxes that move freely (or in a plane) and the fixed walls;
+    // contact_index_[b] is body b's place in it, or -1.
+    std::unique_ptr<ContactWorld> contact_;
+    std::vector<int> contact_index_;
     std::array<double, 3> tank_lo_{}, tank_hi_{};
     std::vector<std::string> tank_faces_;
     std::string source_;
