@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +30,22 @@ bool boxes_overlap(const Triple& lo1, const Triple& hi1, const Triple& lo2, cons
     for (std::size_t a = 0; a < dim; ++a)
         overlap = overlap && std::min(hi1[a], hi2[a]) - std::max(lo1[a], lo2[a]) > eps;
     return overlap;
+}
+
+// How far two overlapping boxes reach into each other: the smallest overlap over the axes, and
+// that axis ("by 0.02 m along x" is what separating them takes).
+std::string overlap_depth(const Triple& lo1, const Triple& hi1, const Triple& lo2,
+                          const Triple& hi2, std::size_t dim) {
+    double depth = std::numeric_limits<double>::infinity();
+    std::size_t along = 0;
+    for (std::size_t a = 0; a < dim; ++a) {
+        const double d = std::min(hi1[a], hi2[a]) - std::max(lo1[a], lo2[a]);
+        if (d < depth) {
+            depth = d;
+            along = a;
+        }
+    }
+    return fmt::format("by {:.4g} m along {}", depth, kAxis[along]);
 }
 
 } // namespace
@@ -143,23 +160,26 @@ void read_walls(const Section& s, CaseConfig& c) {
             const bool inside =
                 low ? box.lo[a] >= c.tank_lo[a] - eps : box.hi[a] <= c.tank_hi[a] + eps;
             b.require(inside, low ? "lo" : "hi",
-                      fmt::format("the box extends beyond the tank wall \"{}\" at {} = {}", f,
+                      fmt::format("the box extends {:.4g} m beyond the tank wall \"{}\" at {} = {}",
+                                  low ? c.tank_lo[a] - box.lo[a] : box.hi[a] - c.tank_hi[a], f,
                                   kAxis[a], low ? c.tank_lo[a] : c.tank_hi[a]));
         }
         for (std::size_t j = 0; j < c.boxes.size(); ++j)
-            b.require(!boxes_overlap(box.lo, box.hi, c.boxes[j].lo, c.boxes[j].hi, dim, eps), "lo",
-                      fmt::format("the box overlaps walls.boxes[{}]", j));
+            b.require(
+                !boxes_overlap(box.lo, box.hi, c.boxes[j].lo, c.boxes[j].hi, dim, eps), "lo",
+                fmt::format("the box overlaps walls.boxes[{}] {}", j,
+                            overlap_depth(box.lo, box.hi, c.boxes[j].lo, c.boxes[j].hi, dim)));
         // A free body displaces the fluid it is placed in (a floating box): the blocks' sites
         // within it are left out. A fixed box must not lie in a block.
         const bool displaces =
             box.motion >= 0 &&
             c.motions[static_cast<std::size_t>(box.motion)].kind == MotionKind::free_body;
         for (std::size_t j = 0; j < c.blocks.size() && !displaces; ++j)
-            b.require(!boxes_overlap(box.lo, box.hi, c.blocks[j].lo, c.blocks[j].hi, dim, eps),
-                      "lo",
-                      fmt::format("the box overlaps the fluid of blocks[{}] (only a free "
-                                  "body's box may: it displaces the fluid)",
-                                  j));
+            b.require(
+                !boxes_overlap(box.lo, box.hi, c.blocks[j].lo, c.blocks[j].hi, dim, eps), "lo",
+                fmt::format("the box overlaps the fluid of blocks[{}] {} (only a free "
+                            "body's box may: it displaces the fluid)",
+                            j, overlap_depth(box.lo, box.hi, c.blocks[j].lo, c.blocks[j].hi, dim)));
         double all = 1, deep = 1; // lattice sites of the box, and those below its shell
         for (std::size_t a = 0; a < dim; ++a) {
             const double n = std::max(1.0, std::round((box.hi[a] - box.lo[a]) / c.dx));
