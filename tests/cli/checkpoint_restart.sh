@@ -116,6 +116,9 @@ sigterm_restart "rolling tank" "$src/cases/sloshing_roll_2d.toml" 50 \
 # A free body: its state and last load travel in the checkpoint (its particles with the rest).
 sigterm_restart "free body" "$src/cases/box_drop_2d.toml" 60 \
     --set particles.dx=0.02 --set time.end_time=0.25 --set time.output_interval=0.05 --quiet
+# Contact: boxes resting on the floor and on each other when the run stops; Bullet's world is
+# built afresh every step, so nothing but the bodies' state needs to travel.
+sigterm_restart "contact" "$src/tests/data/boxes_contact_2d.toml" 300 --quiet
 
 # Wall-clock cadence: every 0.001 minutes a checkpoint replaces the last; a run that finished
 # leaves its last one, from which the end is reached again with the same results.
