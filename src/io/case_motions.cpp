@@ -166,12 +166,20 @@ void read_body(const Section& s, int dim, MotionLaw& law) {
         b.inertia = I;
     }
     law.velocity = s.triple("velocity").value_or(Triple{});
+    b.constraint = s.choice("constraint", BodyConstraint::free, kConstraints);
+    // A hinged body's velocity follows from its angular velocity; a fixed one has neither.
+    s.require(s.node("velocity") == nullptr ||
+                  (b.constraint != BodyConstraint::hinge && b.constraint != BodyConstraint::fixed),
+              "velocity",
+              "does not apply to a hinged or fixed body (a hinge's follows from "
+              "angular_velocity)");
+    s.require(s.node("angular_velocity") == nullptr || b.constraint != BodyConstraint::fixed,
+              "angular_velocity", "does not apply to a fixed body");
     if (dim == 2) {
         b.angular_velocity = {0, 0, s.number("angular_velocity").value_or(0)};
     } else {
         b.angular_velocity = s.triple("angular_velocity").value_or(Triple{});
     }
-    b.constraint = s.choice("constraint", BodyConstraint::free, kConstraints);
     b.friction = s.number("friction", b.friction);
     b.restitution = s.number("restitution", b.restitution);
     if (b.constraint == BodyConstraint::hinge)
@@ -423,6 +431,12 @@ void check_motions(const Section& root, const CaseConfig& c) {
                       fmt::format("free body \"{}\" is named by {} wall objects: a body is one "
                                   "box or one mesh (give each its own [[motions]] entry)",
                                   law.name, objects));
+            // Friction and restitution act in contact only (contact/contact_world.hpp).
+            for (const char* key : {"friction", "restitution"})
+                s.require(s.node(key) == nullptr || body_in_contact(law, objects == 1 && !on_mesh),
+                          key,
+                          "acts in contact only, which takes box bodies that move freely or in "
+                          "a plane normal to a world axis (not hinged, fixed or mesh bodies)");
             s.require(!on_mesh ||
                           (law.body.mass > 0 && law.body.centre_of_mass && law.body.inertia),
                       "mass",

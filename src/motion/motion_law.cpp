@@ -39,6 +39,15 @@ void along_vector(RigidMotion& m, const MotionLaw::V3& q,
 
 } // namespace
 
+bool body_in_contact(const MotionLaw& law, bool is_box) {
+    if (!is_box || law.kind != MotionKind::free_body)
+        return false;
+    const BodyConstraint c = law.body.constraint;
+    const auto& n = law.axis;
+    const bool axis_aligned = (n[0] != 0) + (n[1] != 0) + (n[2] != 0) == 1;
+    return c == BodyConstraint::free || (c == BodyConstraint::plane && axis_aligned);
+}
+
 RigidMotion make_motion(const MotionLaw& law) {
     RigidMotion m;
     m.centre = vec(law.centre);

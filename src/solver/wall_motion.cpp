@@ -55,58 +55,20 @@ WallMotion<D>::WallMotion(const CaseConfig& cfg, const Eos& eos, int layers) {
         body_objects_.push_back(static_cast<int>(k));
     }
     loads_.assign(bodies_.size(), {});
-    // Contact: the bodies of boxes that move freely or in a plane along a world axis, against
-    // the fixed tank's walled faces, the fixed boxes and each other.
-    std::vector<ContactBody> contact_bodies;
-    contact_index_.assign(bodies_.size(), -1);
+    // Contact between the bodies that take part, the fixed walls and each other.
+    std::vector<const MotionLaw*> laws;
+    std::vector<std::optional<ContactBox>> boxes;
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
-        const RigidBody& body = bodies_[b];
-        const bool axis_aligned = body.axis().cwiseAbs().maxCoeff() == 1.0;
-        const bool takes_part =
-            body_bounds_[b] && (body.constraint() == BodyConstraint::free ||
-                                (body.constraint() == BodyConstraint::plane && axis_aligned));
-        if (!takes_part)
-            continue;
-        const MotionLaw& law = cfg.motions[static_cast<std::size_t>(
-            objects_[static_cast<std::size_t>(body_objects_[b])].motion)];
-        ContactBody c;
-        c.box = ContactBox{body_bounds_[b]->lo, body_bounds_[b]->hi};
-        c.mass = body.mass().mass;
-        c.centre = body.mass().centre;
-        c.inertia = body.mass().inertia.diagonal();
-        c.friction = law.body.friction;
-        c.restitution = law.body.restitution;
-        c.planar = body.constraint() == BodyConstraint::plane;
-        c.normal = body.axis();
-        contact_index_[b] = static_cast<int>(contact_bodies.size());
-        contact_bodies.push_back(c);
+        laws.push_back(&cfg.motions[static_cast<std::size_t>(
+            objects_[static_cast<std::size_t>(body_objects_[b])].motion)]);
+        boxes.push_back(body_bounds_[b] ? std::optional<ContactBox>(
+                                              ContactBox{body_bounds_[b]->lo, body_bounds_[b]->hi})
+                                        : std::nullopt);
     }
-    if (!contact_bodies.empty()) {
-        std::vector<ContactPlane> planes;
-        if (cfg.tank_motion < 0 && cfg.walls == WallModel::dummy)
-            for (const std::string& face : cfg.tank_faces) {
-                const auto a = static_cast<std::size_t>(face[0] - 'x');
-                if (a >= static_cast<std::size_t>(D))
-                    continue;
-                ContactPlane p;
-                p.normal = Eigen::Vector3d::Zero();
-                const bool low = face[1] == '-';
-                p.normal[static_cast<Eigen::Index>(a)] = low ? 1.0 : -1.0;
-                p.offset = low ? cfg.tank_lo[a] : -cfg.tank_hi[a];
-                planes.push_back(p);
-            }
-        std::vector<ContactBox> fixed;
-        for (const WallBox& box : cfg.boxes)
-            if (box.motion < 0)
-                fixed.push_back({Eigen::Vector3d(box.lo[0], box.lo[1], box.lo[2]),
-                                 Eigen::Vector3d(box.hi[0], box.hi[1], box.hi[2])});
-        contact_ = std::make_unique<ContactWorld>(D, std::move(planes), std::move(fixed),
-                                                  std::move(contact_bodies));
-    }
+    contact_ = make_body_contact(cfg, bodies_, laws, boxes);
     tank_lo_ = cfg.tank_lo;
     tank_hi_ = cfg.tank_hi;
     tank_faces_ = cfg.tank_faces;
-    source_ = cfg.source_file;
     // Walls are laid after the fluid: their ids start where the fluid's end.
     const ParticleId first_wall =
         visit_fluid_blocks<D>(cfg, eos, 0, [](const InitialParticle<D>&) {});
@@ -142,17 +104,17 @@ void WallMotion<D>::prepare(double t, double dt_prev, double dt) {
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         kicks.push_back(bodies_[b].kick(t, dt_prev, dt, loads_[b], loads_known_));
     std::vector<ContactState> after;
-    if (contact_) {
+    if (contact_.world) {
         std::vector<ContactState> start;
         for (std::size_t b = 0; b < bodies_.size(); ++b)
-            if (contact_index_[b] >= 0)
+            if (contact_.index[b] >= 0)
                 start.push_back(bodies_[b].contact_start(kicks[b]));
-        after = contact_->step(start, dt);
+        after = contact_.world->step(start, dt);
     }
     for (const Object& o : objects_) {
         if (o.body >= 0) {
             const auto b = static_cast<std::size_t>(o.body);
-            const int c = contact_index_[b];
+            const int c = contact_.index[b];
             const ContactState* touched = c >= 0 && after[static_cast<std::size_t>(c)].resolved
                                               ? &after[static_cast<std::size_t>(c)]
                                               : nullptr;

@@ -248,6 +248,19 @@ TEST_CASE("free bodies: read with their mass and constraint; mistakes named") {
                  "motions[1].centre");
     expect_error(edit("density = 500", "density = 500\nconstraint = \"sideways\"", body),
                  "motions[1].constraint");
+    // Keys that would change nothing: a hinge's velocity, a fixed body's angular velocity,
+    // friction on a body that takes no part in contact.
+    const std::string hinged =
+        edit("density = 500", "density = 500\nconstraint = \"hinge\"\ncentre = [0.45, 0.7]", body);
+    expect_error(edit("density = 500", "density = 500\nvelocity = [0.1, 0]", hinged),
+                 "motions[1].velocity");
+    expect_error(edit("density = 500", "density = 500\nfriction = 0.3", hinged),
+                 "motions[1].friction");
+    CHECK_NOTHROW(read_case(
+        write_case("body_friction", edit("density = 500", "density = 500\nfriction = 0.3", body))));
+    expect_error(
+        edit("density = 500", "density = 500\nconstraint = \"fixed\"\nangular_velocity = 1", body),
+        "motions[1].angular_velocity");
     // One body, one wall object; never the tank.
     expect_error(edit("\nmotion = \"float\"", "\nmotion = \"roll\"",
                       edit("tank_motion = \"roll\"", "tank_motion = \"float\"", body)),

@@ -87,6 +87,10 @@ struct MotionLaw {
     bool operator==(const MotionLaw&) const = default;
 };
 
+// Whether a free body of this law takes part in contact (contact/contact_world.hpp): a box
+// (`is_box`) that moves freely (every 2-D body), or in a plane normal to a world axis.
+bool body_in_contact(const MotionLaw& law, bool is_box);
+
 // The rigid motion of a law (a free body's: at rest, its motion is integrated by the solver).
 RigidMotion make_motion(const MotionLaw& law);
 

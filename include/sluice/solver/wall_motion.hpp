@@ -14,6 +14,7 @@
 #include "sluice/motion/rigid_body.hpp"
 #include "sluice/motion/rigid_motion.hpp"
 #include "sluice/physics/eos.hpp"
+#include "sluice/solver/body_contact.hpp"
 #include "sluice/solver/body_load_sums.hpp"
 
 #include <algorithm>
@@ -97,8 +98,6 @@ public:
     bool agree_loads(const std::vector<std::span<const std::byte>>& ranks);
     // The loads the last step's agreement gave (force; moment about the centre of mass).
     [[nodiscard]] const std::vector<BodyLoad>& loads() const { return loads_; }
-    // Contact points of the last step (0 without contact).
-    [[nodiscard]] int contacts() const { return contact_ ? contact_->last_contacts() : 0; }
 
     // The bodies' state and loads for a checkpoint, and back (bitwise).
     [[nodiscard]] std::vector<double> body_state() const;
@@ -113,16 +112,12 @@ private:
     std::vector<RigidBody> bodies_;
     std::vector<int> body_objects_;
     std::vector<BodyLoad> loads_;
-    // Where a body's box is at rest, and the tank's walled faces: contact between a body and a
-    // wall is not modelled, so prepare() stops the run when a body would cross a tank face.
+    // Where a body's box is at rest, and the tank's walled faces: a body that takes no part in
+    // contact stops the run in prepare() when it would cross a tank face.
     std::vector<std::optional<Bounds>> body_bounds_;
-    // Contact between the bodies of boxes that move freely (or in a plane) and the fixed walls;
-    // contact_index_[b] is body b's place in it, or -1.
-    std::unique_ptr<ContactWorld> contact_;
-    std::vector<int> contact_index_;
+    BodyContact contact_; // solver/body_contact.hpp
     std::array<double, 3> tank_lo_{}, tank_hi_{};
     std::vector<std::string> tank_faces_;
-    std::string source_;
     bool loads_known_ = false; // once a step's agreement (or a checkpoint) has given them
     Frames frames_;
 };
