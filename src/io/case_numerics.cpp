@@ -3,6 +3,7 @@
 #include "case_numerics.hpp"
 
 #include "case_schema.hpp"
+#include "sluice/physics/kernels.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -114,7 +115,9 @@ void read_scheme(const Section& top, CaseConfig& c) {
 
 void read_numerics(const Section& s, CaseConfig& c) {
     c.kernel = s.choice("kernel", c.kernel, kKernels);
-    c.h_over_dx = s.number("h_over_dx", c.h_over_dx);
+    // Left out, h gives each kernel a support of 3 dx (quintic: h = dx; Wendland C2 and the
+    // cubic spline: h = 1.5 dx), the neighbourhoods the validation cases are measured with.
+    c.h_over_dx = s.number("h_over_dx", 3.0 / kernel_support_factor(c.kernel));
     c.density = s.choice("density", c.density, kDensity);
     c.delta_sph = s.number("delta_sph", c.delta_sph);
     c.density_diffusion = s.choice("density_diffusion", c.density_diffusion, kDiffusion);
@@ -136,11 +139,17 @@ void read_numerics(const Section& s, CaseConfig& c) {
                   "does not apply with numerics.dissipation = \"riemann\"");
         s.require(s.node("wall_artificial_viscosity") == nullptr, "wall_artificial_viscosity",
                   "does not apply with numerics.dissipation = \"riemann\"");
-        s.require(c.artificial_viscosity == 0, "artificial_viscosity",
+        s.require(s.node("artificial_viscosity") == nullptr || c.artificial_viscosity == 0,
+                  "artificial_viscosity",
                   "must be 0 with numerics.dissipation = \"riemann\" (the Riemann solver is "
                   "the scheme's viscosity)");
         c.delta_sph = 0;
+        c.artificial_viscosity = 0;
     }
+    // WCSPH's dissipation: the projection scheme refuses the key (check_scheme_keys), and its
+    // force probes sum the pair terms without it.
+    if (c.scheme == Scheme::projection)
+        c.artificial_viscosity = 0;
     c.shifting = s.number("shifting", c.shifting);
     c.acoustic_damper = s.number("acoustic_damper", c.acoustic_damper);
     c.cfl = s.number("cfl", c.cfl);

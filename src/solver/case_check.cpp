@@ -1,6 +1,7 @@
 // Checks and advice on a validated case, derived from the configuration alone (no particles).
 #include "sluice/solver/case_check.hpp"
 #include "sluice/solver/motion_check.hpp"
+#include "sluice/solver/numerics_advice.hpp"
 
 #include "sluice/io/errors.hpp"
 #include "sluice/physics/initial_profiles.hpp"
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 
 namespace sluice {
 namespace {
@@ -104,6 +106,8 @@ void check_runnable(const CaseConfig& cfg, const CaseInfo& info) {
 
 std::vector<CaseWarning> case_warnings(const CaseConfig& cfg, const CaseInfo& info) {
     std::vector<CaseWarning> out = motion_warnings(cfg);
+    for (CaseWarning& w : numerics_warnings(cfg))
+        out.push_back(std::move(w));
     const auto dim = static_cast<std::size_t>(cfg.dimension);
 
     const BuiltGeometry built = built_geometry(cfg, wall_layers(info.support, cfg.dx));

@@ -130,6 +130,36 @@ TEST_CASE("a case that measures loads is flagged below 20 sqrt(g H)") {
     CHECK(find(case_warnings(layer, describe_case(layer)), "fluid.sound_speed") == nullptr);
 }
 
+TEST_CASE("numerics that cost accuracy are flagged: a resolved viscous flow, alpha = 0 in a "
+          "free-surface flow") {
+    // kCase: nu = 1e-6 m^2/s, c0 = 30 m/s, dx = 0.01 m: Re_dx = 3 * 0.01 / 1e-6 = 3e4, a
+    // free-surface flow with the defaults (alpha = 0.02): nothing to say.
+    CHECK(find(warnings_for({}), "numerics.kernel") == nullptr);
+    CHECK(find(warnings_for({}), "numerics.artificial_viscosity") == nullptr);
+    // alpha = 0 there costs still water and impact peaks.
+    const auto no_alpha = warnings_for({"numerics.artificial_viscosity=0"});
+    REQUIRE(find(no_alpha, "numerics.artificial_viscosity") != nullptr);
+    CHECK(contains(find(no_alpha, "numerics.artificial_viscosity")->message, "free-surface"));
+    // ... but not under the Riemann solver, whose own dissipation replaces it.
+    CHECK(find(warnings_for({"numerics.dissipation=riemann", "numerics.delta_sph=0"}),
+               "numerics.artificial_viscosity") == nullptr);
+    // mu = 30 Pa s: nu = 0.03 m^2/s, Re_dx = 3 * 0.01 / 0.03 = 1 < 10, viscosity resolved.
+    const auto viscous = warnings_for({"fluid.viscosity=30"});
+    REQUIRE(find(viscous, "numerics.kernel") != nullptr);
+    CHECK(contains(find(viscous, "numerics.kernel")->message, "= 1, below 10"));
+    // alpha h c0 / 8 = 0.02 * 0.015 * 30 / 8 = 1.125e-3 m^2/s, 3.75 % of nu.
+    REQUIRE(find(viscous, "numerics.artificial_viscosity") != nullptr);
+    CHECK(contains(find(viscous, "numerics.artificial_viscosity")->message,
+                   "m^2/s, 3.75 % of the laminar nu = 0.03 m^2/s"));
+    const auto quintic = warnings_for({"fluid.viscosity=30", "numerics.kernel=quintic",
+                                       "numerics.h_over_dx=1", "numerics.artificial_viscosity=0"});
+    CHECK(find(quintic, "numerics.kernel") == nullptr);
+    CHECK(find(quintic, "numerics.artificial_viscosity") == nullptr);
+    // The projection scheme has neither.
+    CHECK(find(warnings_for({"fluid.viscosity=30", "numerics.scheme=projection"}),
+               "numerics.kernel") == nullptr);
+}
+
 TEST_CASE("the solver's refusals are made from the configuration alone") {
     const CaseConfig ok = read_case_text(kCase, "check.toml");
     CHECK_NOTHROW(check_runnable(ok, describe_case(ok)));

@@ -203,9 +203,26 @@ end_time = 0.5
     CHECK(c.periodic == std::array<bool, 3>{true, false, false});
     CHECK(c.walls == WallModel::reflective);
     CHECK(c.output_interval == 0);
-    CHECK(c.kernel == KernelType::quintic);
-    CHECK(c.h_over_dx == 1.0);
+    CHECK(c.kernel == KernelType::wendland_c2);
+    CHECK(c.h_over_dx == 1.5);
+    CHECK(c.artificial_viscosity == 0.02);
     CHECK(c.fields == CaseConfig{}.fields);
+}
+
+TEST_CASE("numerics left out: each kernel's support is 3 dx, no artificial viscosity where "
+          "another dissipation or scheme rules") {
+    const std::string path =
+        write_case("numerics_defaults", edit("kernel = \"wendland_c2\"\nh_over_dx = 1.3\n", ""));
+    CHECK(read_case(path).h_over_dx == 1.5);
+    CHECK(read_case(path, {"numerics.kernel=quintic"}).h_over_dx == 1.0);
+    CHECK(read_case(path, {"numerics.kernel=cubic_spline"}).h_over_dx == 1.5);
+    CHECK(read_case(path, {"numerics.kernel=quintic", "numerics.h_over_dx=1.2"}).h_over_dx == 1.2);
+    const CaseConfig riemann =
+        read_case(path, {"numerics.dissipation=riemann", "numerics.delta_sph=0"});
+    CHECK(riemann.artificial_viscosity == 0);
+    CHECK_THROWS_WITH_AS(
+        read_case(path, {"numerics.dissipation=riemann", "numerics.artificial_viscosity=0.02"}),
+        doctest::Contains("artificial_viscosity"), CaseError);
 }
 
 TEST_CASE("default tank faces are all faces of the dimension") {

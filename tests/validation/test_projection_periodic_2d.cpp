@@ -70,8 +70,9 @@ void step_without_free_surface(Simulation<2>& sim, const CaseConfig& cfg) {
 
 // Taylor-Green with the projection scheme; checks every solve and returns the final state.
 Particles<2> taylor_green(double background_pressure, double& energy_error) {
-    // The file's numerics.shifting and numerics.density are WCSPH's: dropped.
-    const std::string text = without_keys("taylor_green_2d.toml", {"shifting", "density"});
+    // The file's numerics.shifting, density and artificial_viscosity are WCSPH's: dropped.
+    const std::string text =
+        without_keys("taylor_green_2d.toml", {"shifting", "density", "artificial_viscosity"});
     const CaseConfig cfg =
         read_case_text(text, case_path("taylor_green_2d.toml"),
                        {"numerics.scheme=\"projection\"", "particles.dx=0.02", "time.end_time=0.1",
@@ -123,12 +124,12 @@ double poiseuille(double dx) {
     const double lx = 16 * dx;
     const std::string hi = fmt::format("[{}, 1e-3]", lx);
     // The file's fluid.eos, numerics.density and walls.no_slip are WCSPH's: dropped.
-    const CaseConfig cfg =
-        read_case_text(without_keys("poiseuille_2d.toml", {"eos", "density", "no_slip"}),
-                       case_path("poiseuille_2d.toml"),
-                       {"numerics.scheme=\"projection\"", fmt::format("particles.dx={}", dx),
-                        "time.end_time=0.2", fmt::format("domain.hi={}", hi),
-                        fmt::format("blocks.0.hi={}", hi), fmt::format("walls.tank_hi={}", hi)});
+    const CaseConfig cfg = read_case_text(
+        without_keys("poiseuille_2d.toml", {"eos", "density", "no_slip", "artificial_viscosity"}),
+        case_path("poiseuille_2d.toml"),
+        {"numerics.scheme=\"projection\"", fmt::format("particles.dx={}", dx), "time.end_time=0.2",
+         fmt::format("domain.hi={}", hi), fmt::format("blocks.0.hi={}", hi),
+         fmt::format("walls.tank_hi={}", hi)});
     Simulation<2> sim(cfg);
     const double F = cfg.gravity[0], nu = cfg.viscosity / cfg.rho0;
     const double L = cfg.tank_hi[1] - cfg.tank_lo[1];

@@ -244,12 +244,15 @@ struct CaseConfig {
 
     // [numerics]
     Scheme scheme = Scheme::wcsph;
-    KernelType kernel = KernelType::quintic;
-    double h_over_dx = 1.0; // smoothing length h = h_over_dx * dx
+    // Wendland C2 with h = 1.5 dx and alpha = 0.02 by default: the settings of
+    // docs/RECOMMENDED_PRACTICE.md for free-surface flow (perf/defaults/README.md measures
+    // them against the quintic kernel with h = dx and no artificial viscosity).
+    KernelType kernel = KernelType::wendland_c2;
+    double h_over_dx = 1.5; // smoothing length h = h_over_dx * dx
     DensityScheme density = DensityScheme::continuity;
     double delta_sph = 0.1; // delta-SPH diffusion coefficient (0 = off; continuity only)
     DensityDiffusion density_diffusion = DensityDiffusion::antuono;
-    double artificial_viscosity = 0; // Monaghan alpha (0 = off)
+    double artificial_viscosity = 0.02; // Monaghan alpha (0 = off; WCSPH only)
     // riemann: Zhang, Hu & Adams (2017) low-dissipation Riemann solver in the momentum and
     // continuity equations (physics/riemann.hpp); replaces artificial viscosity and delta-SPH.
     Dissipation dissipation = Dissipation::artificial;
