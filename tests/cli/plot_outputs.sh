@@ -84,7 +84,8 @@ plot loads_2d probes "$work/loads_2d"
 expect loads_2d '^probe back_wall: force on tank face x- \[N/m\]: Fx Fy; [0-9]+ samples, every step$'
 expect loads_2d '^probe back_wall: moment about \(0, 0\) m \[N m/m\]: Mz$'
 expect loads_2d '^probe back_wall_p: area sensor \(40 mm segment, wall force\) on the wall at \(0, 0.1\) m \[Pa\]'
-expect loads_2d '^probe p2_right_wall: point probe at \(1.595, 0.02\) m \[Pa\]; [0-9]+ samples, every 0.0002 s$'
+expect loads_2d '^probe p2_right_wall: area sensor \(20 mm segment, wall force\) on face x\+ at \(1.6, 0.02\) m \[Pa\]; [0-9]+ samples, every 0.0002 s$'
+expect loads_2d '^probe right_wall_force: force on tank face x\+ \[N/m\]: Fx Fy; [0-9]+ samples, every 0.0002 s$'
 
 "$exe" run "$src/cases/dam_break_3d.toml" --out "$work/loads_3d" --threads 1 --quiet \
     --set time.end_time=0.02 2>/dev/null || fail "3-D run: exit code $?"
