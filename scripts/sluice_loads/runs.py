@@ -133,8 +133,14 @@ class Run:
 
     def probe(self, name: str) -> Probe:
         if name not in self.probes:
+            path = self.folder / "probes" / f"{name}.csv"
+            if path.is_file():
+                with open(path, newline="") as f:
+                    cols = ",".join(next(csv.reader(f), [])) or "no header"
+                raise BadInput(f"{path}: probe '{name}' is not a load probe (columns {cols}); "
+                               "loads are pressure probes, area sensors and force probes")
             known = ", ".join(sorted(self.probes)) or "none"
-            raise BadInput(f"{self.folder}: no load probe '{name}' (load probes: {known})")
+            raise BadInput(f"{self.folder}: no probe '{name}' (load probes: {known})")
         return self.probes[name]
 
 
