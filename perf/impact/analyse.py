@@ -22,12 +22,14 @@ trapezoidal integral of p dt over the window. Writes OUT/impact_convergence.csv 
 run x probe), OUT/impact_convergence_pairs.csv (the convergence section) and, unless
 --no-plots, the PNGs of plot.py.
 
-The pieces, each in its own file beside this one: signals.py (moving average, integrals and
-threshold stretches on irregular samples), metrics.py (the first-impact figures of one
-signal), experiment.py (Buchner's digitised records), records.py (the CSV files read and
-written), run_folders.py (which runs, with which dx, c0 and probe heights) and
-convergence.py (the changes between sound speeds and resolutions). This file reads the runs'
-probes with them and prints and writes the tables.
+This is the study's analysis (its folder layout, sensor heights, Buchner's records); for
+runs of a case of your own use `scripts/loads` (docs/IMPACT_LOADS.md), built on the same
+definitions. The generic pieces are the product's package scripts/sluice_loads (signals on
+irregular samples, the first-impact figures of one signal, tables); beside this file are the
+study's: metrics.py (the study's scales, RMS against a record), experiment.py (Buchner's
+digitised records), records.py (the reference data), run_folders.py (which runs, with which
+dx, c0 and probe heights) and convergence.py (the changes between sound speeds and
+resolutions). This file reads the runs' probes with them and prints and writes the tables.
 """
 from __future__ import annotations
 
@@ -40,13 +42,17 @@ from pathlib import Path
 
 import numpy as np
 
+import loads_package  # noqa: F401  (scripts/ on the path)
 from convergence import CRITERION, convergence_pairs
 from experiment import RMS_RANGE_STAR, digitisation_spread, experiment_metrics
-from metrics import (CONTACT_FRACTION, DEFAULT_FILTER_S, DEFAULT_SMOOTH_S, DEFAULT_WINDOW_STAR,
-                     Scales, first_impact_window, impact_metrics, rms_against)
-from records import format_cell as fmt, load_probe, write_csv
+from metrics import rms_against
 from run_folders import DEFAULT_CASE, RunInfo, discover
-from signals import integral, moving_average
+from sluice_loads.impact import (CONTACT_FRACTION, DEFAULT_FILTER_S, DEFAULT_SMOOTH_S,
+                                 DEFAULT_WINDOW_STAR, Scales, first_impact_window,
+                                 impact_metrics)
+from sluice_loads.runs import load_probe
+from sluice_loads.signals import integral, moving_average
+from sluice_loads.tables import format_cell as fmt, write_csv
 
 HERE = Path(__file__).resolve().parent
 

@@ -35,11 +35,13 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from metrics import (CONTACT_FRACTION, DEFAULT_FILTER_S, DEFAULT_WINDOW_STAR,  # noqa: E402
-                     Scales, first_impact_window)
-from records import format_cell, load_probe, write_csv  # noqa: E402
+import loads_package  # noqa: E402, F401  (scripts/ on the path)
 from run_folders import RunInfo, run_from_study  # noqa: E402
-from signals import dry_as_zero, integral, moving_average  # noqa: E402
+from sluice_loads.impact import (CONTACT_FRACTION, DEFAULT_FILTER_S,  # noqa: E402
+                                 DEFAULT_WINDOW_STAR, Scales, first_impact_window)
+from sluice_loads.runs import load_probe  # noqa: E402
+from sluice_loads.signals import dry_as_zero, integral, moving_average  # noqa: E402
+from sluice_loads.tables import format_cell, write_csv  # noqa: E402
 
 CASE = HERE / "zhou_2d.toml"
 AREA_SENSORS = ["y003mm_area", "y030mm_area", "y080mm_area", "P1_area"]

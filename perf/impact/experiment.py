@@ -1,9 +1,12 @@
 """Buchner's (2002) records of the Zhou/Buchner dam break, digitised (data/, README.md "Sensor
-height"), by sensor height, and their first-impact figures with metrics.py's definitions."""
+height"), by sensor height, and their first-impact figures with the definitions of
+scripts/sluice_loads/impact.py."""
 from __future__ import annotations
 
-from metrics import DEFAULT_FILTER_S, DEFAULT_WINDOW_STAR, Scales, impact_metrics, rms_against
+import loads_package  # noqa: F401  (scripts/ on the path)
+from metrics import rms_against
 from records import load_experiment
+from sluice_loads.impact import DEFAULT_FILTER_S, DEFAULT_WINDOW_STAR, Scales, impact_metrics
 
 EXP_T_MIN_STAR = 2.0         # contact search in the digitised records starts here (the PySPH
                              # copy has +-0.16 p* digitisation noise before t* = 1.9)

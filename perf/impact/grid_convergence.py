@@ -1,6 +1,10 @@
 #!/usr/bin/python3
 """Discretisation uncertainty of the wall loads from three resolutions, each an ensemble.
 
+The study's form, on analyse.py's tables (variant, c0, H/dx columns); for runs of a case of
+your own, `scripts/loads gci` does the same from the run folders (scripts/sluice_loads/gci.py
+is the arithmetic of both).
+
     perf/impact/grid_convergence.py CSV [--wall-force CSV] [--c0 20] [--variant default]
                                     [--out PREFIX]
 
@@ -38,8 +42,10 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import loads_package  # noqa: E402, F401  (scripts/ on the path)
 from convergence import CRITERION  # noqa: E402
-from records import format_cell as fmt, write_csv  # noqa: E402
+from sluice_loads import gci  # noqa: E402
+from sluice_loads.tables import format_cell as fmt, write_csv  # noqa: E402
 
 FORMAL_ORDER = 2.0
 SAFETY = 1.25  # Celik et al. (2008): the factor for three grids
@@ -73,29 +79,11 @@ def ensembles(rows: list[dict], key: str, c0: float, variant: str,
 
 
 def celik(f1: float, f2: float, f3: float) -> dict:
-    """Celik et al. (2008) for r = 2: apparent order, extrapolated value and the fine-grid
-    convergence index (order capped at FORMAL_ORDER), or the kind of failure."""
-    nan = math.nan
-    e21, e32 = f2 - f1, f3 - f2
-    res = {"order": nan, "f_ext": nan, "gci_fine": nan, "kind": ""}
-    if max(abs(e21), abs(e32)) <= FLAT * abs(f1):
-        res["kind"] = "flat"  # both steps within 1 %: no order to read, nothing left to fix
-        return res
-    if e32 / e21 < 0:
-        res["kind"] = "oscillatory"
-        return res
-    p = abs(math.log(abs(e32 / e21))) / math.log(2.0)
-    if abs(e21) > abs(e32):
-        res["kind"] = "diverging"  # the change grows with refinement: not yet asymptotic
-        res["order"] = -p
-        return res
-    res["order"] = p
-    q = 2.0 ** p
-    res["f_ext"] = (q * f1 - f2) / (q - 1.0)
-    pc = min(p, FORMAL_ORDER)
-    res["gci_fine"] = SAFETY * abs(e21 / f1) / (2.0**pc - 1.0) if f1 else nan
-    res["kind"] = "monotone"
-    return res
+    """Celik et al. (2008) for r = 2 (scripts/sluice_loads/gci.py): apparent order, extrapolated
+    value and the fine-grid convergence index (order capped at FORMAL_ORDER), or the kind of
+    failure."""
+    res = gci.three_grid(f1, f2, f3, 2.0, 2.0, SAFETY, FORMAL_ORDER, FLAT)
+    return {k: res[k] for k in ("order", "f_ext", "gci_fine", "kind")}
 
 
 def table(groups: dict[str, dict[int, list[float]]], figure: str) -> list[dict]:

@@ -31,8 +31,9 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import records  # noqa: E402  (load_probe)
-import signals  # noqa: E402  (cumulative_trapezoid)
+import loads_package  # noqa: E402, F401  (scripts/ on the path)
+from sluice_loads import signals  # noqa: E402  (cumulative_trapezoid)
+from sluice_loads.runs import load_probe  # noqa: E402
 
 
 def cumulative_impulse(t, f, projection):
@@ -69,7 +70,7 @@ def main():
             sys.exit(f"{run}: fewer than two snapshots in [{args.t_from}, {args.t_to}] s")
         impulses = {}
         for name in ("F_right_wall", "F_left_wall", "F_floor"):
-            t, f = records.load_probe(Path(run) / "probes" / f"{name}.csv")
+            t, f = load_probe(Path(run) / "probes" / f"{name}.csv")
             impulses[name] = (t, cumulative_impulse(t, f, args.projection))
 
         def impulse(name, ta, tb):

@@ -36,10 +36,11 @@ from pathlib import Path
 import numpy as np
 
 import experiment
-import metrics
+import loads_package  # noqa: F401  (scripts/ on the path)
 import records
 import run_folders
-import signals
+from sluice_loads import impact, signals, tables
+from sluice_loads.runs import load_probe
 
 WINDOWS = [(2.5, 3.0), (3.0, 3.4), (3.4, 5.0), (5.0, 6.2), (6.2, 7.0)]
 FIRST_PEAK_RANGE = (2.4, 3.4)  # the 0.85 s runs end at t* = 3.44
@@ -57,7 +58,7 @@ class Series:
     p: np.ndarray    # p / (rho g H)
 
 
-def references(sc: metrics.Scales, smooth_s: float) -> list[Series]:
+def references(sc: impact.Scales, smooth_s: float) -> list[Series]:
     out = []
     for label, name in experiment.EXPERIMENT[0.160]:
         t, p = records.load_experiment(name)
@@ -85,7 +86,7 @@ def sluice_series(runs: list[run_folders.RunInfo], probes: list[str],
             path = run.folder / "probes" / f"{name}.csv"
             if name not in run.probes or not path.exists():
                 continue
-            t, p = records.load_probe(path)
+            t, p = load_probe(path)
             q = signals.moving_average(t, p, smooth_s)
             label = f"sluice {run.variant} {run.label} {name}"
             out.append(Series(label, "sluice", f"{run.probes[name]:.3f} m", t / sc.t, q / sc.p))
@@ -229,7 +230,7 @@ def main(argv: list[str] | None = None) -> int:
     print(text)
     if a.out:
         a.out.parent.mkdir(parents=True, exist_ok=True)
-        records.write_csv(a.out.with_suffix(".csv"), rows, list(rows[0].keys()))
+        tables.write_csv(a.out.with_suffix(".csv"), rows, list(rows[0].keys()))
         a.out.with_suffix(".txt").write_text(text + "\n")
     if a.png:
         plot(series, a.png, a.smooth_ms)

@@ -18,6 +18,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import experiment  # noqa: E402
 import metrics  # noqa: E402
+from sluice_loads import impact  # noqa: E402  (metrics puts scripts/ on the path)
 
 # m: each panel holds two rows of wall particles at dx = 0.01 m (four at 0.005 m). Valid for
 # dx = 0.01 m / k only: at dx = 0.02 m the strips' edges fall on wall rows.
@@ -32,19 +33,19 @@ PROBES = [("P1 (0.15-0.17 m) panel", "P1_panel"), ("P1 9 mm sensor (force)", "P1
           ("3 mm point", "y003mm")]
 
 
-def figures(run: Path, probe: str, sc: metrics.Scales) -> dict | None:
+def figures(run: Path, probe: str, sc: impact.Scales) -> dict | None:
     path = run / "probes" / f"{probe}.csv"
     if not path.exists():  # a run from before the probe was added to the case
         return None
     d = np.genfromtxt(path, delimiter=",", names=True)
     p = d["Fx_N"] / PANEL_HEIGHT if probe.endswith("_panel") else d["pressure_Pa"]
-    return metrics.impact_metrics(d["time_s"], p, sc)
+    return impact.impact_metrics(d["time_s"], p, sc)
 
 
 def main() -> int:
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     median = "--median" in sys.argv
-    sc = metrics.Scales()  # H = 0.6 m, g = 9.81, rho0 = 1000
+    sc = metrics.zhou_scales()
     rows = {name: [figures(Path(r), probe, sc) for r in args] for name, probe in PROBES}
     for exp in experiment.experiment_metrics(0.16, sc):
         print(f"{exp['label']:40s} filtered peak {exp['peak_filt_star']:.2f} rho g H, "

@@ -1,22 +1,15 @@
-"""The impact study's CSV files: sluice's probe records, the reference data in data/ (a header
-of '#' lines saying where the data come from, then a row of column names) and the tables the
-scripts write (CSVs, and the cells of their text tables)."""
+"""The impact study's reference data in data/: a header of '#' lines saying where the data come
+from, then a row of column names. Probe files and the tables the scripts write are read and
+written with the product's package (scripts/sluice_loads: runs.load_probe, tables.write_csv,
+tables.format_cell)."""
 from __future__ import annotations
 
 import csv
-import math
-import re
 from pathlib import Path
 
 import numpy as np
 
 DATA = Path(__file__).resolve().parent / "data"
-
-
-def load_probe(path: Path) -> tuple[np.ndarray, np.ndarray]:
-    """time_s, pressure_Pa of a probe CSV; NaN (dry) kept as NaN."""
-    d = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return d[:, 0], d[:, 1]
 
 
 def read_data_columns(name: str) -> dict[str, np.ndarray]:
@@ -34,21 +27,3 @@ def load_experiment(name: str) -> tuple[np.ndarray, np.ndarray]:
     """(t*, p*) of a digitised record in data/ (its first two columns), sorted by time."""
     cols = list(read_data_columns(name).values())
     return cols[0], cols[1]
-
-
-def write_csv(path: Path, rows: list[dict], columns: list[str]) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
-
-
-def format_cell(v, spec: str) -> str:
-    """v formatted with spec for a text table, or "-" right-aligned in spec's width when v is a
-    float that is not finite (a figure a run could not give)."""
-    if isinstance(v, float) and not math.isfinite(v):
-        width = re.match(r"[<>^]?(\d*)", spec.lstrip("+")).group(1)
-        return "-".rjust(int(width) if width else 1)
-    return format(v, spec)

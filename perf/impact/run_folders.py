@@ -11,8 +11,9 @@ from pathlib import Path
 
 import numpy as np
 
-from metrics import Scales
-from records import load_probe
+import loads_package  # noqa: F401  (scripts/ on the path)
+from sluice_loads.impact import Scales
+from sluice_loads.runs import load_probe
 
 DEFAULT_CASE = Path(__file__).resolve().parent / "zhou_2d.toml"
 

@@ -33,8 +33,8 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "lib"))
 sys.path.insert(0, str(HERE))
 import analyse  # noqa: E402
-import metrics  # noqa: E402
 import run_folders  # noqa: E402
+from sluice_loads import impact  # noqa: E402  (run_folders puts scripts/ on the path)
 import sluice_run as sr  # noqa: E402
 
 CASE = HERE / "zhou_2d.toml"
@@ -230,8 +230,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--jitters", help="an ensemble per point: particles.jitter values, "
                     "comma-separated (e.g. 0,0.002,0.005,0.01); convergence is then judged on "
                     "the medians (a first-impact peak varies up to 2x between such runs)")
-    ap.add_argument("--window", type=float, default=metrics.DEFAULT_WINDOW_STAR)
-    ap.add_argument("--filter-ms", type=float, default=1e3 * metrics.DEFAULT_FILTER_S)
+    ap.add_argument("--window", type=float, default=impact.DEFAULT_WINDOW_STAR)
+    ap.add_argument("--filter-ms", type=float, default=1e3 * impact.DEFAULT_FILTER_S)
     ap.add_argument("--no-analyse", action="store_true")
     ap.add_argument("--dry-run", action="store_true", help="print the plan and stop")
     a = ap.parse_args(argv)

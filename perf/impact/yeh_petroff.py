@@ -25,7 +25,8 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-import signals  # noqa: E402  (moving_average and integral on irregular samples)
+import loads_package  # noqa: E402, F401  (scripts/ on the path)
+from sluice_loads import signals  # noqa: E402  (moving_average, integral on irregular samples)
 
 EXP = HERE / "data" / "yeh_petroff_column_force.csv"
 

@@ -154,10 +154,11 @@ def impact_pressure(out_dir: Path, case: dict) -> float:
 
     sys.path.insert(0, str(ROOT / "perf" / "impact"))
     import experiment  # noqa: E402 (numpy; the impact study's own definitions)
-    import metrics  # noqa: E402
+    import loads_package  # noqa: E402, F401 (scripts/ on the path)
+    from sluice_loads import impact  # noqa: E402, PLC0415 (the first-impact figures)
 
-    sc = metrics.Scales(H=case["blocks"][0]["hi"][1] - case["blocks"][0]["lo"][1],
-                        g=abs(case["fluid"]["gravity"][-1]), rho0=case["fluid"]["rho0"])
+    sc = impact.Scales(H=case["blocks"][0]["hi"][1] - case["blocks"][0]["lo"][1],
+                       g=abs(case["fluid"]["gravity"][-1]), rho0=case["fluid"]["rho0"])
     # The wall panel at P1 (force on the 2 cm strip 0.15-0.17 m / 0.02 m): the load the wall
     # carries, which spray cannot fake (perf/impact/STUDY.md, "Read as wall loads").
     import numpy as np  # noqa: PLC0415
@@ -171,7 +172,7 @@ def impact_pressure(out_dir: Path, case: dict) -> float:
         # is then the 9 mm area sensor P1_area, which that scheme reads by interpolation.
         d = np.genfromtxt(out_dir / "probes" / "P1_area.csv", delimiter=",", names=True)
         p = d["pressure_Pa"]
-    sim = metrics.impact_metrics(d["time_s"], p, sc)["peak_filt_star"]
+    sim = impact.impact_metrics(d["time_s"], p, sc)["peak_filt_star"]
     exp = experiment.experiment_metrics(0.160, sc)[0]["peak_filt_star"]
     return abs(sim - exp) / exp
 

@@ -39,10 +39,9 @@ sys.path.insert(0, str(HERE.parent))
 import analyse  # noqa: E402  (perf/impact/analyse.py)
 import experiment  # noqa: E402
 import metrics  # noqa: E402
-import records  # noqa: E402
 import run_folders  # noqa: E402
-import signals  # noqa: E402
-from records import format_cell as fmt  # noqa: E402
+from sluice_loads import impact, signals, tables  # noqa: E402  (on the path through analyse)
+from sluice_loads.tables import format_cell as fmt  # noqa: E402
 import panels  # noqa: E402  (perf/impact/panels.py)
 
 SIGNALS = [("P1 panel 150-170 mm", "P1_panel", 0.16), ("P1 point 160 mm", "P1", 0.16),
@@ -70,7 +69,7 @@ def mean_over(t_star: np.ndarray, pf: np.ndarray, lo: float, hi: float) -> float
     return float(np.mean(pf[m]))
 
 
-def figures(label: str, run: Path, sc: metrics.Scales, exp: dict) -> list[dict]:
+def figures(label: str, run: Path, sc: impact.Scales, exp: dict) -> list[dict]:
     rows = []
     for name, probe, y in SIGNALS:
         s = signal(run, probe)
@@ -84,7 +83,7 @@ def figures(label: str, run: Path, sc: metrics.Scales, exp: dict) -> list[dict]:
                               "neg_longest_ms", "window_complete")}}
         if probe in ("P1", "P1_panel"):
             ts = t / sc.t
-            pf = signals.moving_average(t, p, metrics.DEFAULT_FILTER_S) / sc.p
+            pf = signals.moving_average(t, p, impact.DEFAULT_FILTER_S) / sc.p
             lo, hi = experiment.RMS_RANGE_STAR
             row.update({
                 "ratio_peak_filt": m["peak_filt_star"] / exp["peak_filt_star"],
@@ -102,7 +101,7 @@ def figures(label: str, run: Path, sc: metrics.Scales, exp: dict) -> list[dict]:
     return rows
 
 
-def run_info(label: str, run: Path, sc: metrics.Scales) -> run_folders.RunInfo:
+def run_info(label: str, run: Path, sc: impact.Scales) -> run_folders.RunInfo:
     """What wall_force_table needs: a peer run's study_run.json (peer_metrics.py) gives its c0;
     a sluice run of zhou_2d.toml has dx = 0.01 m and c0 = 48.52 m/s unless --set changed them."""
     if (run / "study_run.json").exists():
@@ -145,7 +144,7 @@ def print_tables(rows: list[dict], exp: dict, exp_b: dict) -> None:
                 f"{fmt(r['t_second_peak_star'], '5.2f')}")
 
 
-def plot(runs: list[tuple[str, Path]], sc: metrics.Scales, exps: list[dict], out: Path) -> Path:
+def plot(runs: list[tuple[str, Path]], sc: impact.Scales, exps: list[dict], out: Path) -> Path:
     import matplotlib  # noqa: PLC0415 (only when plotting)
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # noqa: PLC0415
@@ -168,7 +167,7 @@ def plot(runs: list[tuple[str, Path]], sc: metrics.Scales, exps: list[dict], out
                 else:
                     t, p = signal(run, probe)
                     v = p / sc.p
-                vf = signals.moving_average(t, v, metrics.DEFAULT_FILTER_S)
+                vf = signals.moving_average(t, v, impact.DEFAULT_FILTER_S)
                 ts = t / sc.t
                 m = (ts >= lo) & (ts <= hi)
                 ax.plot(ts[m], signals.dry_as_zero(v[m]), color=colours[j], lw=0.4, alpha=0.35)
@@ -199,7 +198,7 @@ def write_csv(path: Path, rows: list[dict]) -> None:
     cols = []
     for r in rows:
         cols.extend(k for k in r if k not in cols)
-    records.write_csv(path, rows, cols)
+    tables.write_csv(path, rows, cols)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -215,7 +214,7 @@ def main(argv: list[str] | None = None) -> int:
         if not d or not (Path(d) / "probes").is_dir():
             ap.error(f"--run {s}: expected LABEL=DIR with DIR/probes/")
         runs.append((label, Path(d)))
-    sc = metrics.Scales()
+    sc = metrics.zhou_scales()
     exps = experiment.experiment_metrics(0.16, sc)
     exp, exp_b = exps[0], exps[1]
     rows = [r for label, run in runs for r in figures(label, run, sc, exp)]
@@ -223,7 +222,7 @@ def main(argv: list[str] | None = None) -> int:
     with redirect_stdout(buf):
         print_tables(rows, exp, exp_b)
         force = analyse.wall_force_table([run_info(label, run, sc) for label, run in runs],
-                                         metrics.DEFAULT_WINDOW_STAR, metrics.DEFAULT_FILTER_S)
+                                         impact.DEFAULT_WINDOW_STAR, impact.DEFAULT_FILTER_S)
         print("   (variant = run label; whole wall = the x+ face and the corner it shares; "
               "peak over rho g H^2/2 = 1766 N/m, impulse over that times sqrt(H/g))")
     text = buf.getvalue()

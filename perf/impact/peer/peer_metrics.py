@@ -122,7 +122,7 @@ def convert(run: Path) -> dict:
         ks = [i for i in range(N_STRIP) if lo < 0.005 + DP * i < hi]
         write_force(name, [parts[i] for i in ks])
     # the records analyse.py reads for a study run
-    sc = metrics.Scales()
+    sc = metrics.zhou_scales()
     end = float(t[-1])
     with open(run / "study_run.json", "w") as f:
         json.dump({"variant": "peer", "label": run.name, "dx": DP, "c0": k["c0"],

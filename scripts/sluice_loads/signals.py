@@ -1,6 +1,7 @@
-"""Operations on irregularly sampled probe records (time [s], value; NaN = a dry probe) that
-every impact script shares: the centred moving average, integrals over a time range and the
-stretches below a threshold. The signal is taken as piecewise linear between samples."""
+"""Operations on irregularly sampled probe records (time [s], value; NaN = a dry probe): the
+centred moving average, integrals over a time range and the stretches below a threshold. The
+signal is taken as piecewise linear between samples. A probe sampled every step has the
+solver's variable time step between samples, so nothing here assumes a regular spacing."""
 from __future__ import annotations
 
 import numpy as np
