@@ -2,7 +2,9 @@
 # Everything CI runs (.ci/run), stage by stage, with the wall time of each:
 #   release    scripts/check_product_text.sh (a second: the documentation and comments speak of
 #              the software, not of how it was developed), then the README's test command
-#              (scripts/test.sh): every test, Release build;
+#              (scripts/test.sh): every test, Release build, with ParaView installed
+#              (SLUICE_WITH_PARAVIEW=1, scripts/setup.sh) so that cli_paraview_snapshots runs
+#              instead of skipping (SLUICE_WITH_PARAVIEW=0 leaves it out);
 #   asan       AddressSanitizer + UndefinedBehaviorSanitizer: the unit tests listed in
 #              asan_unit_tests (reading, output, checkpoints, the task runtime), the MPI unit
 #              tests (halo exchange, migration on 3 ranks) and sluice's bad-input cli test;
@@ -51,7 +53,10 @@ tsan_full_targets=("${tsan_targets[@]}" test_thread_invariance test_halo_wiring 
 
 run_stage() {
     case "$1" in
-    release) bash scripts/check_product_text.sh && bash scripts/test.sh ;;
+    release)
+        bash scripts/check_product_text.sh &&
+            SLUICE_WITH_PARAVIEW="${SLUICE_WITH_PARAVIEW:-1}" bash scripts/test.sh
+        ;;
     asan)
         bash scripts/setup.sh asan sluice "${asan_unit_tests[@]}" &&
             ctest --preset asan -R "$asan_tests"

@@ -3,6 +3,9 @@
 # the given CMake preset (default: release): every target, or only the targets named after
 # it. Idempotent: packages already present are skipped and an existing build directory is
 # reused. Usage: setup.sh [PRESET [TARGET...]]
+# SLUICE_WITH_PARAVIEW=1 also installs ParaView 5.11, its Python and xvfb (about 85 MB to
+# download, 770 MB installed): what tests/cli/paraview_snapshots.sh and `scripts/plot paraview`
+# need; CI's release stage sets it, the normal set-up leaves it out.
 set -euo pipefail
 preset="${1:-release}"
 shift || true
@@ -16,6 +19,7 @@ packages=(build-essential cmake ninja-build pkg-config git
           python3-scipy bsdutils)
 # The fuzzer needs clang and its runtime (libFuzzer); other presets build with GCC.
 [ "$preset" != fuzz ] || packages+=(clang-14 libclang-rt-14-dev)
+[ "${SLUICE_WITH_PARAVIEW:-0}" != 1 ] || packages+=(paraview python3-paraview xvfb xauth)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
