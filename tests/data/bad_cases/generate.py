@@ -341,6 +341,20 @@ def applicable(doc, key, name):
 # Byte-level mutations: broken syntax, encodings, duplicates, truncation.
 
 
+def harmful_cut(data, cut):
+    """A position inside the key of the last key-value line that starts before cut, so that
+    the truncated file ends in a key without its value: a cut elsewhere may leave a valid case
+    (in a trailing comment) or a shorter valid value ("2.0e-4" cut to "2")."""
+    head = data[:cut].decode("utf-8", "ignore")
+    starts = [0] + [i + 1 for i, c in enumerate(head) if c == "\n"]
+    for start in reversed(starts):
+        line = head[start:].split("\n", 1)[0]
+        if " = " in line.split("#", 1)[0] and not line.lstrip().startswith(("#", "[")):
+            key_len = len(line.split(" = ", 1)[0])
+            return len(head[:start].encode()) + max(1, key_len // 2)
+    return cut
+
+
 def raw(base, text):
     data = text.encode()
     lines = text.splitlines(keepends=True)
@@ -361,10 +375,10 @@ def raw(base, text):
     q = text.find('"')
     if q >= 0:
         add("trunc_string", data[: q + 3])
-    # Arbitrary cuts: the rest may still parse (then a key is missing).
+    # Cuts at a random line: inside the key of the last key-value line before a random byte.
     rnd = random.Random(base)
     for n in range(4):
-        add(f"trunc_at{n}", data[: rnd.randrange(1, len(data))], "@any")
+        add(f"trunc_at{n}", data[: harmful_cut(data, rnd.randrange(1, len(data)))], "@any")
     add("empty", b"", "case.dimension")
     add("only_comment", b"# nothing here\n", "case.dimension")
     # Not UTF-8: in a comment, a string, a key; overlong encoding; lone surrogate; Latin-1.
