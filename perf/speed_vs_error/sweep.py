@@ -86,7 +86,8 @@ def resolution_overrides(name: str, case: dict, dx: float) -> dict:
 
 def projection_available(sluice: Path, case_file: Path) -> bool:
     """True once the solver accepts numerics.scheme = "projection" (the WCSPH-vs-projection
-    comparison of perf/README.md, "Speed against error"): asked of `sluice info`, which validates without running."""
+    comparison of perf/README.md, "Speed against error"): asked of `sluice info`, which
+    validates without running."""
     r = subprocess.run([str(sluice), "info", str(case_file), "--set",
                         "numerics.scheme=projection"], capture_output=True, text=True)
     return r.returncode == 0
