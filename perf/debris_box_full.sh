@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Seed 000's 3-D case at its own settings for the full 2 s (cases/debris_box_3d.toml): the
-# solver's own time step (about 7 us with c = 350 m/s, h = 0.01 m), not the seed's 1 ms.
+# Tak's (2024) 3-D case at its own settings for the full 2 s (cases/debris_box_3d.toml): the
+# solver's own time step (about 7 us with c = 350 m/s, h = 0.01 m), not the paper's 1 ms.
 # Prints the run summary (steps, wall time, particle-steps/s) and the surge-front history.
 # Usage: perf/debris_box_full.sh [THREADS] [END_TIME]
 set -euo pipefail

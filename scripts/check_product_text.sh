@@ -3,10 +3,12 @@
 # does: work sessions, stops, tracker issues, the people and processes behind a change, a source
 # paper named by its file number instead of its authors. Prints file:line:text for each hit.
 #
-# Checked: README.md, CMakeLists.txt files, cmake/, docs/, perf/**/README.md, perf/NOTES.md,
-# cases/, include/, src/, tasks/, scripts/, tests/ and .ci/ (tracked text files). Not checked:
-# data (csv, h5, stl, obj, ply, off, png, svg, json, vtu, log, other txt, patch), tests/data/ (generated corpora that only hold
-# data), perf/ scripts and results (measurement records), this script itself.
+# Checked: README.md, CMakeLists.txt files, cmake/, docs/, perf/ (its documents, perf/**/*.md,
+# and its scripts, benchmark sources and case files), cases/, include/, src/, tasks/, scripts/,
+# tests/ and .ci/ (tracked text files). Not checked: data (csv, h5, stl, obj, ply, off, png, svg,
+# json, vtu, log, other txt, patch), tests/data/ (generated corpora that only hold data),
+# perf/**/results/ (the measurement records: tables, logs and the runs' own files), this script
+# itself.
 #
 # Usage: scripts/check_product_text.sh [file...]   (default: every checked file of the repository)
 set -uo pipefail
@@ -42,11 +44,12 @@ doc_re="$(join "${patterns[@]}" "${doc_only_patterns[@]}")"
 if (($#)); then
     files=("$@")
 else
-    mapfile -t files < <(git ls-files -- README.md CMakeLists.txt cmake docs perf/NOTES.md 'perf/**README.md' \
-        'perf/*/README.md' cases include src tasks scripts tests .ci |
+    mapfile -t files < <(git ls-files -- README.md CMakeLists.txt cmake docs perf cases include src \
+        tasks scripts tests .ci |
         grep -v -E '\.(csv|h5|stl|obj|ply|off|png|svg|json|vtu|vtk|log|patch|bin)$' |
         awk '!/\.txt$/ || /(^|\/)CMakeLists\.txt$/' |
-        grep -v -E '^tests/data/' | grep -v -x 'scripts/check_product_text.sh' | sort -u)
+        grep -v -E '^tests/data/|^perf/(.*/)?results/' | grep -v -x 'scripts/check_product_text.sh' |
+        sort -u)
 fi
 
 hits=0

@@ -1,10 +1,11 @@
 // WMLS gradient/Laplacian error and stencil quality with radius against convex-hull
-// neighbours on particle sets deformed by motion (issue 22): a block carried by a shear flow
-// and by a stretching flow (tests/validation/hull_deformed_sets.hpp gives the sets, the field
-// and the measures), and snapshots of the 2-D dam break (cases/dam_break_2d.toml, WCSPH) in
-// its run-up jet and its splash, fluid and wall particles as the run left them. Everything goes
-// through selected_operators, the function the projection scheme's stencil stage
-// calls, with its settings (re = 3.1 dx, PNU-MPS weight, candidates within re).
+// neighbours on particle sets deformed by motion (perf/convex_hull/README.md, "Operator error
+// on deformed sets"): a block carried by a shear flow and by a stretching flow
+// (tests/validation/hull_deformed_sets.hpp gives the sets, the field and the measures), and
+// snapshots of the 2-D dam break (cases/dam_break_2d.toml, WCSPH) in its run-up jet and its
+// splash, fluid and wall particles as the run left them. Everything goes through
+// selected_operators, the function the projection scheme's stencil stage calls, with its
+// settings (re = 3.1 dx, PNU-MPS weight, candidates within re).
 // Usage: bench_hull_deformed [dam-break dx = 0.02] [snapshot times = 0.6,1.1]
 #include "hull_deformed_sets.hpp"
 

@@ -1,7 +1,8 @@
 // WMLS gradient/Laplacian error with convex-hull neighbours against radius neighbours on
-// strongly anisotropic particle sets (issue 5). The sets and the three neighbour selections are
-// described in tests/validation/hull_operator_error.hpp; the guard on these figures is
-// tests/validation/test_hull_operator_error.cpp. Usage: bench_hull_operator_error
+// strongly anisotropic particle sets (perf/convex_hull/README.md, "Operator error"). The sets
+// and the three neighbour selections are described in tests/validation/hull_operator_error.hpp;
+// the guard on these figures is tests/validation/test_hull_operator_error.cpp.
+// Usage: bench_hull_operator_error
 #include "hull_operator_error.hpp"
 
 #include <cstdio>

@@ -1,6 +1,6 @@
 // Cost of convex-hull neighbour selection per particle against the plain radius search
-// (issue 5). A jittered lattice (20 % random displacement of dx) is binned with the solver's
-// own cell grid; per particle we time
+// (perf/convex_hull/README.md, "Cost per particle"). A jittered lattice (20 % random
+// displacement of dx) is binned with the solver's own cell grid; per particle we time
 //   search  : the radius search over the adjacent cells (Neighbourhood::for_each_neighbour),
 //             gathering the offsets within the candidate radius 3.1 dx;
 //   radius  : select_neighbours_into with the radius policy on those offsets (support 3.1 dx);

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """The projection dam break (cases/projection_dam_break_2d.toml) with radius neighbours and with
-convex-hull neighbours per operator (issue 22): does the run finish, how far is the front from
-Martin & Moyce (RMS relative deviation for T <= 3, as perf/projection/dam_break_compare.py),
-the pressure solver's iterations, the highest fluid particle (the run-up jet) and the fraction
+convex-hull neighbours per operator (perf/convex_hull/README.md, "Stability in a run"): does
+the run finish, how far is the front from Martin & Moyce (RMS relative deviation for T <= 3,
+as perf/projection/dam_break_compare.py), the pressure solver's iterations, the highest fluid particle (the run-up jet) and the fraction
 of fluid particles on surface rows (p = 0) in the last snapshot.
 
 Usage: perf/convex_hull/hull_dam_break.py [--dx 0.02] [--end 0.8] [--threads 1] [--out DIR]
@@ -27,7 +27,7 @@ from dam_break_compare import A, G, front_rms, read_probe  # noqa: E402
 
 HULL = '"convex-hull"'
 POLICIES = {
-    "radius (seed 004)": [],
+    "radius (Park et al. 2014)": [],
     "hull: gradient": [f"neighbours.gradient.selection={HULL}"],
     "hull: Laplacian": [f"neighbours.laplacian.selection={HULL}"],
     "hull: free surface": [f"neighbours.free_surface.selection={HULL}"],

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Wall-impact pressure of finished sluice runs (issue 18), from their probe files alone.
+"""Wall-impact pressure of finished sluice runs (perf/impact/README.md), from their probe files
+alone.
 
     perf/impact/analyse.py DIR [DIR ...] [--out DIR] [--case CASE.toml] [--probe NAME=Y ...]
                            [--window 0.5] [--filter-ms 1.0] [--smooth-ms 10] [--no-plots]
@@ -186,7 +187,7 @@ def print_experiment(sc: Scales, window_star: float, filter_s: float) -> None:
 
 def print_convergence(pairs: list[dict]) -> None:
     print("\n== convergence: relative change of the filtered first-impact peak (and of the peak "
-          "after the longer average, and of the impulse), (fine - coarse) / fine; issue 18 "
+          "after the longer average, and of the impulse), (fine - coarse) / fine; the study's "
           "criterion |change| < 15 % of the filtered peak for c0 20->40 and H/60->H/120")
     if not pairs:
         print("   (no pairs: needs at least two c0 at one dx or two dx at one c0)")
@@ -200,7 +201,7 @@ def print_convergence(pairs: list[dict]) -> None:
         if q["criterion_pair"]:
             flag = {True: "  PASS", False: "  FAIL", None: "  n/a"}[q["passes"]]
             # The same 15 % on the longer average's peak, the load that converges (docs/
-            # RECOMMENDED_PRACTICE.md); the issue's criterion stays the filtered peak's.
+            # RECOMMENDED_PRACTICE.md); the study's criterion stays the filtered peak's.
             smooth = q["rel_change_smooth"]
             if math.isfinite(smooth):
                 flag += f" (longer average {'PASS' if abs(smooth) < CRITERION else 'FAIL'})"

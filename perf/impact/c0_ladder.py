@@ -8,7 +8,7 @@ Each CSV is one analyse.py output (`impact_convergence.csv`); its LABEL names th
 made with, e.g. `1ms=.../impact_convergence.csv 10ms=.../impact_convergence.csv` for
 `analyse.py STUDY --filter-ms 1` and `--filter-ms 10`; CSVs given the same label are merged.
 An `impact_wall_force.csv` given the same way adds the whole downstream wall's force (over
-rho g H^2 / 2) as the probe `wall_force`. A CSV from analyse.py since session 44 also carries
+rho g H^2 / 2) as the probe `wall_force`. A CSV from analyse.py since e8c7e1f also carries
 the peak after its second, longer average (`peak_smooth_star`, analyse.py --smooth-ms, 10 ms by
 default): it is printed and plotted as the line `10ms average` (`--smooth-label`: name the
 width the CSV was made with; left out when a label of that name is given) from the first CSV
@@ -111,7 +111,7 @@ def main(argv: list[str] | None = None) -> int:
             # --filter-ms 10): the line would be printed twice.
             smooth = (ladder(first, "peak_smooth_star")
                       if first and a.smooth_label not in by_label else [])
-            if smooth:  # CSVs older than session 44 have no such column
+            if smooth:  # CSVs older than e8c7e1f have no such column
                 print_ladder(f"{a.smooth_label} average", smooth)
                 lines.append((f"{a.smooth_label} average", smooth))
             panels.append((f"{probe}, H/{h}", lines))

@@ -1,5 +1,5 @@
 """Convergence of the first-impact figures between sound speeds and between resolutions:
-the relative change of the filtered peak (issue 18's criterion: less than 15 % from c0 = 20
+the relative change of the filtered peak (perf/impact/README.md's criterion: less than 15 % from c0 = 20
 to 40 sqrt(gH) and from H/60 to H/120), of the longer average's peak and of the impulse; an
 ensemble of runs (study.py --jitters) enters by its medians."""
 from __future__ import annotations
@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from analyse import ProbeResult
 
-CRITERION = 0.15  # issue 18: the filtered peak changes by less than 15 %
+CRITERION = 0.15  # perf/impact/README.md: the filtered peak changes by less than 15 %
 
 
 def ensemble_medians(results: list[ProbeResult]) -> list[ProbeResult]:

@@ -28,8 +28,9 @@ fine, middle and coarse medians, e21 = f2 - f1 and e32 = f3 - f2,
     order from three noisy medians would claim more than the scheme can give (Roache 1998,
     "Verification and validation in computational science and engineering", ch. 5).
 Where the change grows with refinement ("diverging", not yet asymptotic) the order is printed
-negative and nothing is extrapolated. Beside it: the change per doubling, (fine - coarse) / fine as analyse.py gives it (issue 18's
-criterion: less than 15 %), and whether the last change is larger than the fine ensemble's
+negative and nothing is extrapolated. Beside it: the change per doubling, (fine - coarse) / fine
+as analyse.py gives it (perf/impact/README.md's criterion: less than 15 %), and whether the
+last change is larger than the fine ensemble's
 half-range, the run-to-run scatter below which a change is not resolved.
 """
 from __future__ import annotations
@@ -153,7 +154,7 @@ def main(argv: list[str] | None = None) -> int:
              " peaks in rho g H, impulse in rho g H sqrt(H/g); the whole wall in rho g H^2/2 "
              "(and that times sqrt(H/g))",
              "# step1 / step2: (fine - coarse) / fine from coarse to mid and from mid to fine "
-             f"(issue 18: |change| < {100 * CRITERION:g} %); >noise: |fine - mid| above half the "
+             f"(criterion: |change| < {100 * CRITERION:g} %); >noise: |fine - mid| above half the "
              "fine runs' range; order, f_ext, GCI: Celik et al. (2008), GCI with the order "
              f"capped at {FORMAL_ORDER:g}"]
     text = "\n".join(lines + format_table(rows)) + "\n"

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Wall-impact pressure convergence study (issue 18): the Zhou/Buchner dam break
+"""Wall-impact pressure convergence study (perf/impact/README.md): the Zhou/Buchner dam break
 (perf/impact/zhou_2d.toml) over resolutions x sound speeds x variants, then analyse.py.
 
     perf/impact/run.sh [--resolutions H/30,H/60,H/120] [--c0 10,20,40] [--end-time 1.0]

@@ -8,9 +8,9 @@
 #   --projection  the projection scheme (the case without its WCSPH-only keys; the column's
 #           force probe integrates the interpolated pressure over the column's faces).
 # Cost on the 2-core development machine: dx = 0.02 m dry, 0.9 s: ~6 min on 1 thread;
-# dx = 0.01 m with the wet bed (224k particles), 0.75 s: 25 min on 2 threads (session 34);
+# dx = 0.01 m with the wet bed (224k particles), 0.75 s: 25 min on 2 threads (5d69565);
 # --projection --dry: dx = 0.015 m, 0.9 s: 28 min on 1 thread; dx = 0.01 m, 0.8 s: 61 min on 2
-# threads (session 40).
+# threads (274d72b).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"

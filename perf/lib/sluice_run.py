@@ -157,7 +157,7 @@ def projection_case(sluice: Path, case_file: Path, out_dir: Path) -> Path:
 
 def force_probes_under_projection(schema: list[dict]) -> bool:
     """Whether the binary whose `sluice schema` this is reads force probes under the projection
-    scheme (the interpolated pressure integrated over the wall, since session 37)."""
+    scheme (the interpolated pressure integrated over the wall, since d930776)."""
     return any(k["table"] == "probes" and k["key"] == "reading"
                and 'type = "force"' in k.get("when", "") for k in schema)
 

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Peak resident memory of every rank of a run, at several rank counts (issue 21, "Memory").
+"""Peak resident memory of every rank of a run, at several rank counts
+(perf/memory/README.md).
 
 Runs `sluice run CASE` once per rank count, each rank under `/usr/bin/time -f %M` (its peak
 resident set, KiB, written to a file per rank), with snapshots and checkpoints, and prints per
@@ -15,7 +16,7 @@ part sets is read off directly.
 
 Defaults: perf/cases/dam_break_2d_peer_1m.toml (999,698 fluid particles), end time 2e-5 s
 (5 steps), snapshots of the initial and the final state (output_interval = 0, snapshots on)
-and a checkpoint every 2 steps, 1 worker thread per rank. The issue's target: every rank's peak at 4
+and a checkpoint every 2 steps, 1 worker thread per rank. The target: every rank's peak at 4
 ranks <= 0.40 x the 1-rank peak.
 """
 import argparse

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Seed 004's 2-D dam break with both schemes: cases/dam_break_2d.toml (WCSPH) and
+"""Park et al.'s (2014) 2-D dam break with both schemes: cases/dam_break_2d.toml (WCSPH) and
 cases/projection_dam_break_2d.toml (projection). Plots, in one PNG, the surge front Z = x/a
 against T = t sqrt(2 g / a) with Martin & Moyce's (1952) points, and the pressure history of
 probe P2 (right wall, 0.02 m above the floor). Prints per scheme the front's RMS relative

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Seed 004's hydrostatic tank for the full 5 s with both schemes: cases/hydrostatic_2d.toml
+# Park et al.'s (2014) hydrostatic tank for the full 5 s with both schemes: cases/hydrostatic_2d.toml
 # (WCSPH) and cases/projection_hydrostatic_2d.toml (projection). Prints, per scheme, the mean
 # bottom-centre pressure after 1 s against rho g (H - y_probe), its temporal noise (standard
 # deviation after 1 s), the worst sample, the wall time and ms per step, and for the

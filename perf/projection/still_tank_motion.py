@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""What the still tank's pressure noise is made of (issue 22; perf/projection/README.md,
-"session 29"). Reads runs of cases/hydrostatic_2d.toml (WCSPH) and/or
+"""What the still tank's pressure noise is made of (perf/projection/README.md, "What the noise
+is"). Reads runs of cases/hydrostatic_2d.toml (WCSPH) and/or
 cases/projection_hydrostatic_2d.toml with snapshots every 0.01 s, e.g.
 
     sluice run cases/projection_hydrostatic_2d.toml --out RUN --set time.output_interval=0.01

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Time to solution of the projection scheme against WCSPH on seed 004's 2-D dam break
-(issue 22's targets: <= 1.5x WCSPH's wall time, front RMS <= WCSPH's, <= 20 pressure-solver
-iterations per step on average).
+"""Time to solution of the projection scheme against WCSPH on Park et al.'s (2014) 2-D
+dam break (the targets of docs/PROJECTION.md §4: <= 1.5x WCSPH's wall time, front RMS <=
+WCSPH's, <= 20 pressure-solver iterations per step on average).
 
 Runs cases/dam_break_2d.toml (WCSPH) and cases/projection_dam_break_2d.toml (projection, in
 the variants below) one after the other, round after round (interleaved, so that the load of
@@ -16,11 +16,11 @@ Variants (projection): "adaptive" (the case as shipped: adaptive dt, the default
 preconditioner), "ilu0" (adaptive dt, projection.preconditioner = "block_ilu0"), "fixed"
 (numerics.dt = 2e-4, the case's old fixed step), "jacobi" (adaptive dt, the Jacobi
 preconditioner named), "fixed-jacobi" (both old settings: the scheme as it was before
-issue 22); "ilu0-tol6", "ilu0-tol5", "jacobi-tol6", "jacobi-tol5" (a looser
+aedddea); "ilu0-tol6", "ilu0-tol5", "jacobi-tol6", "jacobi-tol5" (a looser
 projection.tolerance, 1e-6 or 1e-5 instead of the case's 1e-8); "shift0.05", "shift0.2", "shift0.5"
 (particle shifting, projection.shifting = 0.05, 0.2 or 0.5); "two-level", "two-level-tol6"
 (projection.preconditioner = "two_level", at the case's 1e-8 or at 1e-6); "minimum"
-(correction_reference = "minimum", deviation_weight = "pnu_mps": the scheme before session 30);
+(correction_reference = "minimum", deviation_weight = "pnu_mps": the scheme before 76e7738);
 "gamma0" (projection.gamma = 0).
 
 Usage: perf/projection/time_to_solution.py [--dx 0.01] [--end 1.0] [--rounds 1]
@@ -29,7 +29,7 @@ Usage: perf/projection/time_to_solution.py [--dx 0.01] [--end 1.0] [--rounds 1]
 
 --nice 0 runs at normal priority: on a machine loaded by others' normal-priority jobs, a run
 at nice 10 got 3 % of a core (42 s of CPU in 25 min), which CPU time does not count but the
-session's clock does.
+wall clock does.
 """
 from __future__ import annotations
 
@@ -70,7 +70,7 @@ VARIANTS = {
     "shift0.05": ["projection.shifting=0.05"],
     "shift0.2": ["projection.shifting=0.2"],
     "shift0.5": ["projection.shifting=0.5"],
-    # P7's reference and P3's weight as before session 30 (docs/PROJECTION.md, P3 and P7), and
+    # P7's reference and P3's weight as before 76e7738 (docs/PROJECTION.md, P3 and P7), and
     # the defaults without the density-deviation term.
     "minimum": ['projection.correction_reference="minimum"', 'projection.deviation_weight="pnu_mps"'],
     "gamma0": ["projection.gamma=0"],

@@ -147,7 +147,7 @@ def impact_pressure(out_dir: Path, case: dict) -> float:
     """Relative deviation of the 1 ms filtered first-impact peak at sensor P1 (0.16 m on the
     downstream wall of the Zhou/Buchner dam break), read as the wall panel P1_panel (under the
     projection scheme its interpolated force with its wall collisions; a run without the
-    panel, from a binary before session 37 under that scheme: the area sensor P1_area), from
+    panel, from a binary before d930776 under that scheme: the area sensor P1_area), from
     the experiment's, with the definitions of perf/impact/analyse.py (contact at 0.05 rho g
     H, window 0.5 t*)."""
     import sys
@@ -168,7 +168,7 @@ def impact_pressure(out_dir: Path, case: dict) -> float:
         d = np.genfromtxt(panel, delimiter=",", names=True)
         p = d["Fx_N"] / 0.02
     else:
-        # Binaries before session 37 refused force probes under the projection scheme: its P1
+        # Binaries before d930776 refused force probes under the projection scheme: its P1
         # is then the 9 mm area sensor P1_area, which that scheme reads by interpolation.
         d = np.genfromtxt(out_dir / "probes" / "P1_area.csv", delimiter=",", names=True)
         p = d["pressure_Pa"]

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed against error (issue 6): error of four validation cases against core-seconds, over
+# Speed against error (perf/README.md): error of four validation cases against core-seconds, over
 # resolutions and scheme options. Options go to perf/speed_vs_error/sweep.py (--help):
 #   perf/speed_vs_error/run.sh --quick --label "machine under load"   # coarse, minutes
 #   perf/speed_vs_error/run.sh --cases dam_break --threads 2           # full sweep of one case

@@ -86,7 +86,8 @@ def resolution_overrides(name: str, case: dict, dx: float) -> dict:
 
 def projection_available(sluice: Path, case_file: Path) -> bool:
     """True once the solver accepts numerics.scheme = "projection" (the WCSPH-vs-projection
-    comparison of issue 6): asked of `sluice info`, which validates without running."""
+    comparison of perf/README.md, "Speed against error"): asked of `sluice info`, which
+    validates without running."""
     r = subprocess.run([str(sluice), "info", str(case_file), "--set",
                         "numerics.scheme=projection"], capture_output=True, text=True)
     return r.returncode == 0
@@ -116,8 +117,8 @@ def variants(case: dict, quick: bool, projection: bool) -> list[tuple[str, dict]
     # error comes from the exact symmetry of the starting lattice.
     out.append(("jitter 1e-3", {"particles.jitter": 1e-3}))
     if case.get("walls", {}).get("model") == "dummy":
-        # Issue 18's two wall options: artificial viscosity on wall pairs (the old default)
-        # and the Riemann solver.
+        # The impact study's two wall options (perf/impact/STUDY.md): artificial viscosity on
+        # wall pairs (the default before 5b5d1ac) and the Riemann solver.
         out.append(("wall artificial viscosity", {"numerics.wall_artificial_viscosity": True}))
         out.append(("riemann", {"numerics.dissipation": "riemann", "numerics.delta_sph": 0.0,
                                 "numerics.artificial_viscosity": 0.0}))

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Stability suite on hard cases (issue 6): runs cases/hard/* (and seed 000's debris box) and
-# prints a PASS/FAIL line per rule; exit status 0 only if every rule passes.
+# Stability suite on hard cases (perf/stability/README.md): runs cases/hard/* (and Tak's (2024)
+# debris box) and prints a PASS/FAIL line per rule; exit status 0 only if every rule passes.
 # Usage: perf/stability/run.sh [--coarse] [--threads N] [--sluice EXE] [--out DIR]
 #                              [--set KEY=VALUE ...] [CASE ...]
 # CASE: rotating, mach, still_water, elliptical_drop, impact, debris_box (default: all).

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Stability suite on hard cases (issue 6): runs the cases of cases/hard/ with the sluice
-executable, measures each case's stability figures from its snapshots and probes, and prints
+"""Stability suite on hard cases (perf/stability/README.md): runs the cases of cases/hard/
+with the sluice executable, measures each case's stability figures from its snapshots and probes, and prints
 a PASS/FAIL line per rule. Exit status 0 when every rule passes, 1 otherwise, 2 on a usage
 error. Called by perf/stability/run.sh; the rules are documented in perf/stability/README.md.
 
@@ -112,7 +112,7 @@ class Report:
         print(f"  [{'PASS' if passed else 'FAIL'}] {name}: {text}")
 
     def target(self, name, met, text):
-        """An issue target that the model is known to miss in some setting: printed as MET or
+        """A target that the model is known to miss in some setting: printed as MET or
         MISSED, not counted in the exit status (a guard rule beside it catches regressions)."""
         print(f"  [{'MET' if met else 'MISSED'}] target {name}: {text}")
 
@@ -258,7 +258,7 @@ def dam_break_mach(args, rep):
         # dominates the maximum (printed as well).
         rms = float(np.sqrt(np.mean(rel ** 2)))
         text = (f"RMS of (x_front - x_front(40))/x_front(40) over T >= 0.5 = {100 * rms:.2f} % "
-                f"(issue: < 2 %); largest {100 * np.abs(rel).max():.2f} %; front at "
+                f"(target: < 2 %); largest {100 * np.abs(rel).max():.2f} %; front at "
                 f"t = {t_ref[window][-1]:.3f} s: {np.interp(t_ref[window][-1], t, x):.4f} m vs "
                 f"{x_ref[window][-1]:.4f} m")
         if k == 20:
@@ -338,7 +338,7 @@ def high_speed_impact(args, rep):
 
 
 def debris_box_3d(args, rep):
-    """Seed 000's 3-D falling block at its own settings (c = 350 m/s)."""
+    """Tak's (2024) 3-D falling block at its own settings (c = 350 m/s)."""
     # c = 350 m/s makes dt ~7 us: ~60 CPU-s per 0.01 s simulated on the shared 2-core machine.
     end = 0.01 if args.coarse else 0.12
     run = run_case(args, "cases/debris_box_3d.toml", "debris_box_3d", 0.0131578947368421,

@@ -6,7 +6,7 @@ per rank, splits the loop into the step graphs and the gaps between them. A step
 from its first task (compute node, halo pack or unpack) to its last; the gap after it ends at
 the first task of the next step. In the gap, the main thread's slices (track "MPI, main
 thread") name what it did: the step's reduction (`reduce`: the time-step all-gather, or the
-wait for the non-blocking one), `migrate` (at a Verlet-list rebuild; since issue 21 it carries
+wait for the non-blocking one), `migrate` (at a Verlet-list rebuild; since 6e72242 it carries
 the halo counts too), `halo counts` (a round of its own: at a rebuild in older binaries, now
 only at the start and after a rebalance),
 `rebalance`, and the main thread's own work where the run records it: `rebuild` (the rest of

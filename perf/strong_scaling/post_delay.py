@@ -2,7 +2,7 @@
 """How long a packed halo message waits to be posted, and what that wait costs the peer.
 
 A halo exchange is packed by a task on a worker thread and posted (MPI_Isend) by that task
-(with MPI_THREAD_MULTIPLE, the default since session 33) or, with only MPI_THREAD_FUNNELED or
+(with MPI_THREAD_MULTIPLE, the default since c8cbf90) or, with only MPI_THREAD_FUNNELED or
 SLUICE_POST_FROM_MAIN set, by the rank's main thread at its next poll: the main thread sleeps
 up to 1 ms between polls while tasks run (tasks/src/step_graph.cpp). Reads a
 multi-rank `sluice run --trace` and reports, per exchange (`pressure`, `walls`, `velocity`;

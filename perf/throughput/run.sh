@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Throughput benchmark of issue 6: particle-steps per second (whole steps, I/O off), per core,
+# Throughput benchmark (perf/README.md): particle-steps per second (whole steps, I/O off), per core,
 # per stage with achieved neighbour interactions, and memory per particle, for the fixed
 # configurations in perf/cases/; --scaling adds time per step against N (10^4 ... 10^6).
 # All options are passed to perf/throughput/throughput.py (run with --help for the list):

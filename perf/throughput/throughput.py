@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Throughput of sluice on the fixed configurations of issue 6, and time per step against N.
+"""Throughput of sluice on the fixed configurations of perf/README.md, and time per step against N.
 
     perf/throughput/run.sh [--threads 2] [--configs 1,2,3-200k,3-1m] [--short] [--scaling]
                            [--scaling-only] [--full] [--accuracy] [--out DIR] [--nice N]
@@ -67,7 +67,7 @@ ACCURACY = [
      {"fluid.sound_speed": 20 * math.sqrt(9.81 * 0.8), "time.end_time": 0.45,
       "probes.1.interval": 0.005},
      "front RMS deviation from Martin & Moyce", 0.15,
-     "test_dam_break_2d guard 15 % (issue target 10 %)"),
+     "test_dam_break_2d guard 15 % (target 10 %)"),
     ("hydrostatic", "cases/hydrostatic_2d.toml", {"fluid.sound_speed": 20 * math.sqrt(9.81 * 0.4)},
      "worst bottom-pressure error after 1 s", 0.02, "test_hydrostatic_2d threshold 2 %"),
 ]

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Weak scaling, correctness (issue 21): the 2-D dam break of perf/cases/dam_break_2d_200k.toml
-# widened so that it has about PER_RANK particles per rank, run for a few steps on R ranks and
+# Weak scaling, correctness (perf/weak_scaling/README.md): the 2-D dam break of
+# perf/cases/dam_break_2d_200k.toml widened so that it has about PER_RANK particles per rank, run for a few steps on R ranks and
 # on one rank; the snapshots (byte-identical for any layout, docs/ARCHITECTURE.md "Output")
 # and the probe files must be identical. A rank count whose run differs, fails or has too
 # few particles makes the script exit 1.

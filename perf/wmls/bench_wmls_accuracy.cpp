@@ -1,6 +1,7 @@
-// Seed 004's operator benchmark as a table (WMLS vs MPS vs SPH), orders of convergence on
-// random particles, conditioning of the WMLS fit and the cost per particle. Shares the set-up
-// and the error norm with tests/validation/test_wmls_benchmark.cpp (operator_accuracy.hpp).
+// Park et al.'s (2014) operator benchmark as a table (WMLS vs MPS vs SPH), orders of
+// convergence on random particles, conditioning of the WMLS fit and the cost per particle.
+// Shares the set-up and the error norm with tests/validation/test_wmls_benchmark.cpp
+// (operator_accuracy.hpp).
 // Usage: bench_wmls_accuracy [--seeds N]     (perf/wmls/README.md)
 #include "operator_accuracy.hpp"
 #include "sluice/physics/free_surface.hpp"
@@ -75,8 +76,8 @@ void benchmark_table(const OperatorBenchmark& base, int seeds) {
                        "{:>7.2f}%] {:>7}\n",
                        variants[k].name, 100 * first[k].gradient, 100 * gmin[k], 100 * gmax[k],
                        100 * first[k].laplacian, 100 * lmin[k], 100 * lmax[k], first[k].not_ok);
-        fmt::print("  seed 004 (2-D, its own error norm): WMLS 6.5% / 3.2%, PNU-MPS 68.5% / "
-                   "60.4%\n\n");
+        fmt::print("  Park et al. 2014 (2-D, its own error norm): WMLS 6.5% / 3.2%, PNU-MPS "
+                   "68.5% / 60.4%\n\n");
     }
 }
 
@@ -168,8 +169,8 @@ int main(int argc, char** argv) {
             seeds = std::stoi(argv[a + 1]);
 
     const OperatorBenchmark base;
-    fmt::print("Seed 004 benchmark: [{}, {}]^2, l0 = {}, re = {} l0, displacement up to {} l0 "
-               "per coordinate, f = sin x cos y\n",
+    fmt::print("Park et al. (2014) benchmark: [{}, {}]^2, l0 = {}, re = {} l0, displacement up "
+               "to {} l0 per coordinate, f = sin x cos y\n",
                base.lo, base.hi, base.l0, base.re_over_l0, base.randomness);
     fmt::print("relative L2 errors E (operator_accuracy.hpp); seed {} and [min, max] over {} "
                "seeds\n\n",
