@@ -19,6 +19,7 @@ patterns=(
     '\b[Ss]essions?\b'                  # "session 45", "(session 35)", "this session's binary"
     '\b[Ss]tops? [0-9]+'                # "stop 33's run"
     '\b[Ii]ssues? #?[0-9]+'             # "issue 18", "issue #22", "issues 5 and 22"
+    "\\b[Tt]he (foundation )?issue('s)?\\b|\\bissue's\\b|\\bissue-[0-9]" # "the issue's criterion", "issue-5 runs"
     '\b[Tt]he lead\b(?! (time|edge|term|order|coefficient))' # "the lead re-measures" (not "the lead time")
     '\(lead[,)]'                        # "(lead, ...)"
     '\bagents?\b'                       # "other agents", "agent sessions"

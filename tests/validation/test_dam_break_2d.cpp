@@ -2,7 +2,7 @@
 // front Z = x/a against T = t sqrt(2g/a), RMS relative deviation over the experimental points
 // with T <= 3 (both column widths).
 //
-// The foundation issue's target is 10 %; sluice measures 12.6 %: the simulated front leads
+// The validation target is 10 %; sluice measures 12.6 %: the simulated front leads
 // the experiment early (T < 2) and matches its later slope. Koshizuka & Oka's own MPS
 // computation leads their experiment the same way, and sluice's front agrees with that MPS
 // front within 3 % RMS; every defensible change (resolution, kernel, free/no-slip walls,

@@ -5,7 +5,7 @@
 // 0.01 m case used to fail (a splash particle left the domain) and past the first impact on
 // the right wall (about 0.4 s). Checks: every step succeeds (a failed step throws); the
 // surge front Z = x/a against T = t sqrt(2g/a) follows Martin & Moyce (1952, n^2 = 2) within
-// the foundation issue's 15 % RMS guard (T <= 3); the closest pair of fluid particles stays
+// the 15 % RMS guard (T <= 3); the closest pair of fluid particles stays
 // more than 0.3 dx apart (the fluid-fluid collision's job: without it pairs closed to
 // 0.004 dx, nearly coincident, in the 0.02 s snapshots of this run; with it the test
 // measures 0.65 dx, sampled every 5 ms); no fluid particle passes the first wall layer (dx/2
