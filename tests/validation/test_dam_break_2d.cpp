@@ -70,7 +70,8 @@ TEST_CASE("Dam break surge front follows Martin & Moyce (n^2 = 2)") {
     CHECK(rms < 0.15);
     const FrontDeviation bulk =
         front_deviation(Ts, Zs_bulk, data_path("martin_moyce_1952_n2_2.csv"), -1.0, 3.0, "");
-    std::printf("dam break: the bulk-only front (the front probe before commit 5facdf5) deviates %.2f %% RMS from "
+    std::printf("dam break: the bulk-only front (the front probe before commit 5facdf5) deviates "
+                "%.2f %% RMS from "
                 "Martin & Moyce\n",
                 100 * bulk.rms);
 }
