@@ -1,15 +1,15 @@
-// Park et al.'s (2014) 2-D dam break with the projection scheme (cases/projection_dam_break_2d.toml) at
-// a coarse resolution (dx = 0.02 m, 800 fluid particles, dt = 0.4 ms: the case's dt scaled
-// with dx; the case's 0.01 m run to 1 s and the comparison with WCSPH are
-// perf/projection/dam_break_compare.py). The run goes to 0.8 s, past the 0.66 s at which the
-// 0.01 m case used to fail (a splash particle left the domain) and past the first impact on
-// the right wall (about 0.4 s). Checks: every step succeeds (a failed step throws); the
-// surge front Z = x/a against T = t sqrt(2g/a) follows Martin & Moyce (1952, n^2 = 2) within
-// the 15 % RMS guard (T <= 3); the closest pair of fluid particles stays
-// more than 0.3 dx apart (the fluid-fluid collision's job: without it pairs closed to
-// 0.004 dx, nearly coincident, in the 0.02 s snapshots of this run; with it the test
-// measures 0.65 dx, sampled every 5 ms); no fluid particle passes the first wall layer (dx/2
-// behind a tank face); every pressure solve reaches the tolerance; mass is kept exactly.
+// Park et al.'s (2014) 2-D dam break with the projection scheme
+// (cases/projection_dam_break_2d.toml) at a coarse resolution (dx = 0.02 m, 800 fluid particles, dt
+// = 0.4 ms: the case's dt scaled with dx; the case's 0.01 m run to 1 s and the comparison with
+// WCSPH are perf/projection/dam_break_compare.py). The run goes to 0.8 s, past the 0.66 s at which
+// the 0.01 m case used to fail (a splash particle left the domain) and past the first impact on the
+// right wall (about 0.4 s). Checks: every step succeeds (a failed step throws); the surge front Z =
+// x/a against T = t sqrt(2g/a) follows Martin & Moyce (1952, n^2 = 2) within the 15 % RMS guard (T
+// <= 3); the closest pair of fluid particles stays more than 0.3 dx apart (the fluid-fluid
+// collision's job: without it pairs closed to 0.004 dx, nearly coincident, in the 0.02 s snapshots
+// of this run; with it the test measures 0.65 dx, sampled every 5 ms); no fluid particle passes the
+// first wall layer (dx/2 behind a tank face); every pressure solve reaches the tolerance; mass is
+// kept exactly.
 #include "sluice/physics/probes.hpp"
 #include "sluice/solver/simulation.hpp"
 #include "validation_support.hpp"
