@@ -8,6 +8,7 @@
 # Usage: rank_invariance.sh SLUICE_EXE SOURCE_DIR MPIEXEC
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/lib/same_results.sh"
 
 run() { # name ranks threads case args...
     local name=$1 ranks=$2 threads=$3 case=$4
@@ -24,17 +25,9 @@ check_case() { # name case args...
         run "$name" "${layout%x*}" "${layout#*x}" "$case" "$@"
     done
     local ref="$work/$name/1x1"
-    local snaps
-    snaps=$(ls "$ref/snapshots"/*.h5 | wc -l)
-    [[ $snaps -ge 3 ]] || { echo "FAIL $name: only $snaps snapshots"; exit 1; }
     for layout in 1x2 2x1 3x1 2x2; do
         local dir="$work/$name/$layout"
-        for f in "$ref"/snapshots/*.h5; do
-            cmp "$f" "$dir/snapshots/$(basename "$f")" ||
-                { echo "FAIL $name: $layout differs from 1x1 in $(basename "$f")"; exit 1; }
-        done
-        diff -r "$ref/probes" "$dir/probes" ||
-            { echo "FAIL $name: $layout probes differ from 1x1"; exit 1; }
+        same_results "$ref" "$dir" "$name $layout against 1x1"
         if [[ $layout != 1x* ]]; then
             grep -q '"particles_moved"' "$dir/summary.json" ||
                 { echo "FAIL $name: no rebalance happened on $layout"; exit 1; }

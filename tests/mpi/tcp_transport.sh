@@ -7,6 +7,7 @@
 # Usage: tcp_transport.sh SLUICE_EXE SOURCE_DIR MPIEXEC
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/script_args.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/lib/same_results.sh"
 
 args=(run "$src/cases/dam_break_2d.toml" --threads 1 -q --set particles.dx=0.02
       --set time.end_time=0.06 --set time.output_interval=0.015 --set runtime.rebalance_every=25)
@@ -15,14 +16,7 @@ args=(run "$src/cases/dam_break_2d.toml" --threads 1 -q --set particles.dx=0.02
     --mca pml ob1 --mca btl tcp,self --mca btl_tcp_if_include lo \
     "$exe" "${args[@]}" --out "$work/tcp"
 
-snaps=$(ls "$work/one/snapshots"/*.h5 | wc -l)
-[[ $snaps -ge 3 ]] || { echo "FAIL: only $snaps snapshots"; exit 1; }
-for f in "$work/one"/snapshots/*.h5; do
-    cmp "$f" "$work/tcp/snapshots/$(basename "$f")" ||
-        { echo "FAIL: 4 ranks over TCP differ from 1 rank in $(basename "$f")"; exit 1; }
-done
-diff -r "$work/one/probes" "$work/tcp/probes" ||
-    { echo "FAIL: 4 ranks over TCP: probes differ from 1 rank"; exit 1; }
+same_results "$work/one" "$work/tcp" "4 ranks over TCP against 1 rank"
 grep -q '"particles_moved"' "$work/tcp/summary.json" ||
     { echo "FAIL: no rebalance happened on 4 ranks"; exit 1; }
 grep -q '"ranks": 4' "$work/tcp/summary.json" || { echo "FAIL: not 4 ranks"; exit 1; }
