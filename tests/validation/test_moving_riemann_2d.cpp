@@ -5,7 +5,7 @@
 //   Riemann dissipation as under the default one. (With the wall pairs' density rate taking
 //   v_i alone, as for a fixed wall, water passed through the moving tank's rear wall: a
 //   particle left the domain at t = 0.15 s.);
-// - a piston flume (h = 0.2 m, dx = 0.02 m, waves 2 cm high, T = 1 s) runs 3 s stably and its
+// - a piston flume (h = 0.2 m, dx = 0.02 m, waves 2 cm high, T = 1 s) runs 2 s stably and its
 //   paddle carries on average the force the default dissipation gives it, within 1 %, near
 //   the hydrostatic rho g h^2 / 2 (the force reading of a wall 10 dx deep reads 5 % low under
 //   either).
@@ -61,7 +61,7 @@ struct TankFigures {
 };
 
 TankFigures run_tank(bool riemann, double u) {
-    const double end = 1.0;
+    const double end = 0.6;
     const CaseConfig cfg = read_case_text(tank_text(riemann, u, end), "riemann_tank.toml");
     SimulationOptions opts;
     opts.threads = 1;
@@ -87,7 +87,7 @@ TankFigures run_tank(bool riemann, double u) {
                 ++speeds;
             }
     }
-    REQUIRE(samples > 50);
+    REQUIRE(samples > 25);
     out.pressure = sum_p / samples;
     out.mean_speed = sum_speed / double(speeds);
     return out;
@@ -113,7 +113,7 @@ TEST_CASE("Galilean check under the Riemann dissipation: a tank moving uniformly
 }
 
 TEST_CASE("A piston flume under the Riemann dissipation runs stably, paddle force hydrostatic") {
-    const double h = 0.2, end = 3.0;
+    const double h = 0.2, end = 2.0;
     double means[2] = {0, 0};
     for (const bool riemann : {true, false}) {
         const std::string text =
@@ -128,15 +128,15 @@ TEST_CASE("A piston flume under the Riemann dissipation runs stably, paddle forc
             "[[motions]]\nname = \"paddle\"\nkind = \"piston\"\nwave_height = 0.02\n"
             "wave_period = 1.0\ndepth = 0.2\nramp = 1.0\n"
             "[[damping_zones]]\nstart = [2.0, 0]\nend = [3.0, 0]\nstrength = 10.0\n"
-            "[time]\nend_time = 3.0\n"
+            "[time]\nend_time = 2.0\n"
             "[[probes]]\nname = \"paddle\"\ntype = \"force\"\nbox = 0\ninterval = 0.01\n";
         const CaseConfig cfg = read_case_text(text, "riemann_piston.toml");
         const FolderRun run = run_in_temp_folder(cfg, riemann ? "riemann_piston" : "av_piston", 2);
         const auto rows = read_csv(run.folder + "/probes/paddle.csv");
         std::filesystem::remove_all(run.folder);
         CHECK(run.result.simulated_time >= end - 1e-9);
-        // The force on the paddle's wet face over the last two wave periods (+x: the fluid
-        // pushes the paddle towards -x).
+        // The force on the paddle's wet face over the last wave period, after the ramp (the
+        // fluid pushes the paddle towards -x).
         double sum = 0;
         int n = 0;
         for (const auto& row : rows)
@@ -144,11 +144,11 @@ TEST_CASE("A piston flume under the Riemann dissipation runs stably, paddle forc
                 sum += -std::stod(row.at(1));
                 ++n;
             }
-        REQUIRE(n > 150);
+        REQUIRE(n > 90);
         means[riemann ? 0 : 1] = sum / n;
     }
     const double hydrostatic = kRho * kG * h * h / 2;
-    std::printf("piston: mean paddle force over 1-3 s, riemann %.2f N/m, artificial %.2f N/m "
+    std::printf("piston: mean paddle force over 1-2 s, riemann %.2f N/m, artificial %.2f N/m "
                 "(hydrostatic %.2f N/m: %+.2f %%, %+.2f %%)\n",
                 means[0], means[1], hydrostatic, 100 * (means[0] / hydrostatic - 1),
                 100 * (means[1] / hydrostatic - 1));

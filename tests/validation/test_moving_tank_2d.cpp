@@ -8,7 +8,8 @@
 //   omega1^2 = g k1 tanh(k1 h), k1 = pi / L, within 2 %;
 // - an area sensor on the rear wall (2 cm face, 5 cm above the floor) moves with the tank: it
 //   reads the same in the Galilean check, the hydrostatics under g - a in the accelerating
-//   tank, and rho g times its depth in a tank rolled slowly by 5 degrees.
+//   tank, and rho g times its depth in a tank rolled slowly by 5 degrees (the force reading
+//   on both side walls, the interpolated one on the rear wall).
 #include "validation_support.hpp"
 
 #include <doctest/doctest.h>
@@ -241,18 +242,23 @@ TEST_CASE("Quasi-static roll: a wall sensor on the rolling tank reads rho g time
         "[time]\nend_time = 4.5\n"
         "[[probes]]\nname = \"s_rear\"\nposition = [0, 0.05]\n" +
         sensor + "[[probes]]\nname = \"s_front\"\nposition = [0.4, 0.05]\n" + sensor +
+        "[[probes]]\nname = \"s_rear_interpolated\"\nposition = [0, 0.05]\nreading = "
+        "\"interpolated\"\n" +
+        sensor +
         "[[probes]]\nname = \"angle\"\ntype = \"motion\"\nframe = \"roll\"\ninterval = 0.005\n";
     const CaseConfig cfg = read_case_text(text, "tank_roll.toml");
     const FolderRun run = run_in_temp_folder(cfg, "tank_roll", 2);
     const auto rear = read_csv(run.folder + "/probes/s_rear.csv");
     const auto front = read_csv(run.folder + "/probes/s_front.csv");
+    const auto interpolated = read_csv(run.folder + "/probes/s_rear_interpolated.csv");
     const auto angle = read_csv(run.folder + "/probes/angle.csv");
     std::filesystem::remove_all(run.folder);
     REQUIRE(rear.size() == angle.size());
     REQUIRE(front.size() == angle.size());
+    REQUIRE(interpolated.size() == angle.size());
     // Least squares of the difference against -rho g L sin theta, of the mean against
     // rho g (H - y_s) cos theta; the sensor's reported centre against the rolled point.
-    double sdd = 0, sdt = 0, stt = 0, mean_err = 0, worst_place = 0, swing = 0;
+    double sdd = 0, sdt = 0, stt = 0, mean_err = 0, worst_place = 0, swing = 0, interp_err = 0;
     int n = 0;
     for (std::size_t k = 0; k < angle.size(); ++k) {
         const double t = std::stod(angle[k].at(0));
@@ -273,18 +279,24 @@ TEST_CASE("Quasi-static roll: a wall sensor on the rolling tank reads rho g time
         sdt += (pf - pr) - d_theory;
         mean_err += (pf + pr) / 2 - kRho * kG * (kH - y_s) * std::cos(th);
         swing = std::max(swing, std::abs(d_theory));
+        // The interpolated reading of the rear face against rho g times its depth.
+        const double rear_theory = kRho * kG * (kL / 2 * std::sin(th) + (kH - y_s) * std::cos(th));
+        interp_err += std::abs(std::stod(interpolated[k].at(1)) / rear_theory - 1);
         ++n;
     }
     REQUIRE(n > 500);
     const double gain = sdd / stt; // the measured difference over the theory's
     mean_err /= n;
+    interp_err /= n;
     std::printf("roll: front - rear sensor difference against -rho g L sin theta: gain %.4f "
                 "(%+.2f %%; swing %.1f Pa, mean offset %+.2f Pa); mean of the two against "
                 "rho g (H - y) cos theta: %+.2f Pa (%+.2f %%); sensor centre and normal against "
-                "the rolled ones: %.2g\n",
+                "the rolled ones: %.2g; interpolated rear reading against rho g depth: mean "
+                "|deviation| %.2f %%\n",
                 gain, 100 * (gain - 1), swing, sdt / n, mean_err,
-                100 * mean_err / (kRho * kG * (kH - y_s)), worst_place);
+                100 * mean_err / (kRho * kG * (kH - y_s)), worst_place, 100 * interp_err);
     CHECK(worst_place < 1e-9);
     CHECK(std::abs(gain - 1) < 0.06);
     CHECK(std::abs(mean_err) < 0.02 * kRho * kG * (kH - y_s));
+    CHECK(interp_err < 0.03);
 }
