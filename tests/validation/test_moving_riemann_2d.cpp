@@ -8,7 +8,8 @@
 // - a piston flume (h = 0.2 m, dx = 0.02 m, waves 2 cm high, T = 1 s) runs 2 s stably and its
 //   paddle carries on average the force the default dissipation gives it, within 1 %, near
 //   the hydrostatic rho g h^2 / 2 (the force reading of a wall 10 dx deep reads 5 % low under
-//   either).
+//   either); an area sensor on the paddle's face rides with it and reads the hydrostatic
+//   pressure at its depth on average, within 3 %.
 #include "validation_support.hpp"
 
 #include "sluice/physics/probes.hpp"
@@ -114,7 +115,7 @@ TEST_CASE("Galilean check under the Riemann dissipation: a tank moving uniformly
 
 TEST_CASE("A piston flume under the Riemann dissipation runs stably, paddle force hydrostatic") {
     const double h = 0.2, end = 2.0;
-    double means[2] = {0, 0};
+    double means[2] = {0, 0}, sensor[2] = {0, 0}, worst_place = 0;
     for (const bool riemann : {true, false}) {
         const std::string text =
             "[case]\ndimension = 2\n[domain]\nlo = [-0.2, 0]\nhi = [3.0, 0.4]\n"
@@ -129,10 +130,16 @@ TEST_CASE("A piston flume under the Riemann dissipation runs stably, paddle forc
             "wave_period = 1.0\ndepth = 0.2\nramp = 1.0\n"
             "[[damping_zones]]\nstart = [2.0, 0]\nend = [3.0, 0]\nstrength = 10.0\n"
             "[time]\nend_time = 2.0\n"
-            "[[probes]]\nname = \"paddle\"\ntype = \"force\"\nbox = 0\ninterval = 0.01\n";
+            "[[probes]]\nname = \"paddle\"\ntype = \"force\"\nbox = 0\ninterval = 0.01\n"
+            "[[probes]]\nname = \"face\"\ntype = \"pressure\"\nposition = [0, 0.1]\n"
+            "diameter = 0.04\ninterval = 0.01\n"
+            "[[probes]]\nname = \"stroke\"\ntype = \"motion\"\nframe = \"paddle\"\n"
+            "interval = 0.01\n";
         const CaseConfig cfg = read_case_text(text, "riemann_piston.toml");
         const FolderRun run = run_in_temp_folder(cfg, riemann ? "riemann_piston" : "av_piston", 2);
         const auto rows = read_csv(run.folder + "/probes/paddle.csv");
+        const auto face = read_csv(run.folder + "/probes/face.csv");
+        const auto stroke = read_csv(run.folder + "/probes/stroke.csv");
         std::filesystem::remove_all(run.folder);
         CHECK(run.result.simulated_time >= end - 1e-9);
         // The force on the paddle's wet face over the last wave period, after the ramp (the
@@ -146,12 +153,34 @@ TEST_CASE("A piston flume under the Riemann dissipation runs stably, paddle forc
             }
         REQUIRE(n > 90);
         means[riemann ? 0 : 1] = sum / n;
+        // The area sensor on the paddle's face rides with it: its centre is the paddle's
+        // displacement from (0, 0.1); its mean over the same period.
+        REQUIRE(face.size() == rows.size());
+        REQUIRE(stroke.size() == rows.size());
+        double p = 0;
+        for (std::size_t k = 0; k < face.size(); ++k) {
+            worst_place = std::max({worst_place,
+                                    std::abs(std::stod(face[k].at(2)) - std::stod(stroke[k].at(1))),
+                                    std::abs(std::stod(face[k].at(3)) - 0.1)});
+            if (std::stod(face[k].at(0)) >= 1.0)
+                p += std::stod(face[k].at(1));
+        }
+        sensor[riemann ? 0 : 1] = p / n;
     }
     const double hydrostatic = kRho * kG * h * h / 2;
     std::printf("piston: mean paddle force over 1-2 s, riemann %.2f N/m, artificial %.2f N/m "
                 "(hydrostatic %.2f N/m: %+.2f %%, %+.2f %%)\n",
                 means[0], means[1], hydrostatic, 100 * (means[0] / hydrostatic - 1),
                 100 * (means[1] / hydrostatic - 1));
+    const double p_face = kRho * kG * (h - 0.1);
+    std::printf("piston: mean pressure of the sensor on the paddle's face 0.1 m above the bed, "
+                "riemann %.2f Pa, artificial %.2f Pa (hydrostatic %.2f Pa: %+.2f %%, %+.2f %%); "
+                "its centre against the paddle's: %.2g m\n",
+                sensor[0], sensor[1], p_face, 100 * (sensor[0] / p_face - 1),
+                100 * (sensor[1] / p_face - 1), worst_place);
+    CHECK(worst_place < 1e-9);
+    CHECK(std::abs(sensor[0] / p_face - 1) < 0.03);
+    CHECK(std::abs(sensor[1] / p_face - 1) < 0.03);
     CHECK(std::abs(means[0] / hydrostatic - 1) < 0.08);
     CHECK(std::abs(means[0] / means[1] - 1) < 0.01);
 }
