@@ -462,9 +462,13 @@ void check_motions(const Section& root, const CaseConfig& c) {
         s.require(c.scheme == Scheme::wcsph, "name",
                   "moving walls are supported by numerics.scheme = \"wcsph\" only (the "
                   "projection scheme's wall collision and Neumann condition take fixed walls)");
-        s.require(c.dissipation == Dissipation::artificial, "name",
-                  "moving walls need numerics.dissipation = \"artificial\" (the Riemann "
-                  "solver's wall states take fixed walls)");
+        // Prescribed motion enters the Riemann solver's wall states (riemann.hpp); a free
+        // body's load is summed with the default dissipation's pair terms (body_load.hpp).
+        s.require(law.kind != MotionKind::free_body || c.dissipation == Dissipation::artificial,
+                  "kind",
+                  fmt::format("free body \"{}\" needs numerics.dissipation = \"artificial\" "
+                              "(its load is summed from that scheme's fluid-wall pairs)",
+                              law.name));
         s.require(!c.run_ahead, "name",
                   "moving walls need runtime.run_ahead = false (the walls' next positions "
                   "depend on the agreed time step)");

@@ -163,8 +163,9 @@ void read_force_region(const Section& s, const CaseConfig& c, ProbeConfig& p) {
     }
 }
 
-// An area sensor's wall: the given face or box, or the one its centre lies on; the centre
-// must be on that wall's surface within dx.
+// An area sensor's wall: the given face or box, or the one its centre lies on (recorded in
+// p.wall, so that the sensor moves with its wall); the centre must be on that wall's surface
+// within dx.
 void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
     s.require(c.walls == WallModel::dummy, "diameter",
               "an area sensor sits on dummy wall particles (walls.model = \"dummy\")");
@@ -189,8 +190,9 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
     const double eps = slack(c);
     double best = std::numeric_limits<double>::infinity();
     // A candidate surface: normal axis, coordinate, and the tangential extent of the wall.
-    const auto consider = [&](std::size_t axis, double at, int into_wall, const Triple& lo,
-                              const Triple& hi) {
+    ProbeWall found;
+    const auto consider = [&](const ProbeWall& wall, std::size_t axis, double at, int into_wall,
+                              const Triple& lo, const Triple& hi) {
         const double d = std::abs(p.position[axis] - at);
         if (d > c.dx + eps || d >= best)
             return;
@@ -198,6 +200,7 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
             if (a != axis && (p.position[a] < lo[a] - eps || p.position[a] > hi[a] + eps))
                 return;
         best = d;
+        found = wall;
         p.sensor_axis = static_cast<int>(axis);
         p.sensor_surface = at;
         p.sensor_into_wall = into_wall;
@@ -210,16 +213,18 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
             continue;
         const auto a = static_cast<std::size_t>(w.face_axis);
         // The tank's walls lie outside it: beyond tank_hi, below tank_lo.
-        consider(a, w.face_high ? c.tank_hi[a] : c.tank_lo[a], w.face_high ? 1 : -1, c.tank_lo,
+        consider(w, a, w.face_high ? c.tank_hi[a] : c.tank_lo[a], w.face_high ? 1 : -1, c.tank_lo,
                  c.tank_hi);
     }
     for (std::size_t b = 0; b < c.boxes.size(); ++b) {
         if (given && given->box != static_cast<int>(b))
             continue;
+        ProbeWall w;
+        w.box = static_cast<int>(b);
         for (std::size_t a = 0; a < dim; ++a) {
             // An obstacle's wall lies inside its box: above its lo face, below its hi face.
-            consider(a, c.boxes[b].lo[a], 1, c.boxes[b].lo, c.boxes[b].hi);
-            consider(a, c.boxes[b].hi[a], -1, c.boxes[b].lo, c.boxes[b].hi);
+            consider(w, a, c.boxes[b].lo[a], 1, c.boxes[b].lo, c.boxes[b].hi);
+            consider(w, a, c.boxes[b].hi[a], -1, c.boxes[b].lo, c.boxes[b].hi);
         }
     }
     if (p.sensor_axis < 0)
@@ -229,16 +234,25 @@ void read_sensor_wall(const Section& s, const CaseConfig& c, ProbeConfig& p) {
                            given ? (given->box >= 0 ? "the given box" : "the given tank face")
                                  : "a walled tank face or a walls.boxes obstacle",
                            c.dx));
-    if (given)
-        p.wall = *given;
+    p.wall = found;
 }
 
 } // namespace
 
 namespace {
 
-// The motion a probe moves with: `frame` when given; a force probe on a moving wall object
-// moves with it. What cannot follow a moving object yet is refused.
+// The motion of a probe's wall object (a force probe's region, an area sensor's wall); -1
+// for a fixed one.
+int wall_motion(const CaseConfig& c, const ProbeWall& w) {
+    if (w.box >= 0)
+        return c.boxes[static_cast<std::size_t>(w.box)].motion;
+    if (w.mesh >= 0)
+        return c.meshes[static_cast<std::size_t>(w.mesh)].motion;
+    return c.tank_motion;
+}
+
+// The motion a probe moves with: `frame` when given; a force probe or an area sensor on a
+// moving wall object moves with it. What cannot follow a moving object yet is refused.
 void read_probe_frame(const Section& s, const CaseConfig& c, ProbeConfig& p) {
     p.frame = motion_reference(s, "frame", c);
     if (p.type == ProbeType::motion) {
@@ -248,22 +262,24 @@ void read_probe_frame(const Section& s, const CaseConfig& c, ProbeConfig& p) {
         p.body = c.motions[static_cast<std::size_t>(p.frame)].kind == MotionKind::free_body;
         return;
     }
-    if (p.type == ProbeType::force && p.frame < 0) {
-        if (p.wall.box >= 0)
-            p.frame = c.boxes[static_cast<std::size_t>(p.wall.box)].motion;
-        else if (p.wall.mesh >= 0)
-            p.frame = c.meshes[static_cast<std::size_t>(p.wall.mesh)].motion;
-        else
-            p.frame = c.tank_motion;
+    if (p.type == ProbeType::force && p.frame < 0)
+        p.frame = wall_motion(c, p.wall);
+    if (p.type == ProbeType::pressure && p.diameter > 0) {
+        // A sensor is mounted on its wall: it moves with it, and with nothing else.
+        const int carried = wall_motion(c, p.wall);
+        s.require(p.frame < 0 || p.frame == carried, "frame",
+                  carried < 0 ? std::string("an area sensor moves with its wall, and the wall "
+                                            "it sits on does not move")
+                              : fmt::format("an area sensor moves with its wall, which moves "
+                                            "with \"{}\"",
+                                            c.motions[static_cast<std::size_t>(carried)].name));
+        p.frame = carried;
     }
     if (p.frame < 0)
         return;
     const char* key = s.node("frame") != nullptr ? "frame" : "type";
     s.require(p.type != ProbeType::surge_front, key,
               "a surge front is measured in the domain's frame; frame does not apply");
-    s.require(p.type != ProbeType::pressure || p.diameter == 0, "diameter",
-              "area sensors on moving walls are not supported; a force probe on the moving "
-              "object (lo/hi cut to the sensor's face) reads the load there");
     s.require(p.type != ProbeType::force || p.reading == SensorReading::force, "reading",
               "a force probe on a moving wall object reads its wall pairs' force (reading = "
               "\"force\")");

@@ -9,10 +9,21 @@
 #include <stdexcept>
 
 namespace sluice {
+namespace {
+
+// An area sensor on a moving wall, whose rows also say where it is.
+bool moving_sensor(const ProbeConfig& probe) {
+    return probe.type == ProbeType::pressure && probe.diameter > 0 && probe.frame >= 0;
+}
+
+} // namespace
 
 std::string probe_csv_header(const ProbeConfig& probe, int dimension) {
     switch (probe.type) {
     case ProbeType::pressure:
+        if (moving_sensor(probe)) // then where its centre is and its normal into the wall
+            return dimension == 3 ? "time_s,pressure_Pa,x_m,y_m,z_m,nx,ny,nz"
+                                  : "time_s,pressure_Pa,x_m,y_m,nx,ny";
         return "time_s,pressure_Pa";
     case ProbeType::water_level:
         return "time_s,water_level_m";
@@ -44,6 +55,8 @@ std::size_t probe_columns(const ProbeConfig& probe, int dimension) {
     if (probe.type == ProbeType::motion)
         return 2 * static_cast<std::size_t>(dimension) + 2 +
                (probe.body ? (dimension == 3 ? 13u : 3u) : 0u);
+    if (moving_sensor(probe))
+        return 1 + 2 * static_cast<std::size_t>(dimension);
     if (probe.type != ProbeType::force)
         return 1;
     const auto d = static_cast<std::size_t>(dimension);

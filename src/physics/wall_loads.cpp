@@ -75,7 +75,8 @@ void for_each_wall_force(const Particles<D>& P, const K& kernel, const WallLoadP
     const bool artificial = !prm.riemann && av > 0 && prm.wall_artificial;
     for (std::size_t j : walls) {
         const Vec<D> xj = P.x[j];
-        // The boundary velocity of the viscous terms (walls.hpp, dummy_wall_state).
+        // The boundary velocity of the viscous terms (walls.hpp, dummy_wall_state), with the
+        // wall particle's own velocity: its wall's on a moving wall, zero on a fixed one.
         Vec<D> v_bc = P.v_bc[j];
         if ((laminar || artificial) && prm.adami_v_bc) {
             AdamiSums<D> sums;
@@ -85,7 +86,7 @@ void for_each_wall_force(const Particles<D>& P, const K& kernel, const WallLoadP
                 if (r2 < support2)
                     sums.add(kernel.W(std::sqrt(r2)), P.p[i], P.rho[i], dx, P.v[i]);
             });
-            v_bc = sums.boundary_velocity(prm.no_slip);
+            v_bc = sums.boundary_velocity(prm.no_slip, P.v[j]);
         }
         const Real rho_j = P.rho[j];
         const Real pj = std::max(P.p[j], prm.p_floor);

@@ -18,6 +18,7 @@
 #include <numbers>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace sluice {
 namespace {
@@ -73,6 +74,21 @@ Vec<D> moved_point(const Vec<D>& x0, const Pose& pose) {
 template <int D>
 Vec<D> body_point(const Vec<D>& x, const Pose& pose) {
     return from_pose_point<D>(pose.body_point(to_pose_point<D>(x)));
+}
+
+// The particles as the object moving with `pose` sees them: positions where they would be
+// relative to its t = 0 placement, velocities turned back with it. The pair terms of the wall
+// loads take differences of positions and of velocities, turned alike, and scalar pressures
+// and densities, so a load summed here is the lab frame's turned into the object's axes: a
+// sensor laid out where its wall is at t = 0 reads as it would on that wall held still.
+template <int D>
+Particles<D> seen_from_object(const Particles<D>& P, const Pose& pose) {
+    Particles<D> seen = P;
+    for (std::size_t i = 0; i < seen.size(); ++i) {
+        seen.x[i] = body_point(seen.x[i], pose);
+        seen.v[i] = from_pose_point<D>(pose.R.transpose() * to_pose_point<D>(seen.v[i]));
+    }
+    return seen;
 }
 
 // A length far below any spacing, for comparing coordinates of the geometry: 1e-9 of the
@@ -214,6 +230,19 @@ Box<D> fixed_footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
     return box;
 }
 
+// An area sensor's centre on its wall and the unit normal into the wall, where the wall is at
+// t = 0.
+template <int D>
+std::pair<Vec<D>, Vec<D>> sensor_centre_normal(const ProbeConfig& probe) {
+    if (probe.wall.mesh >= 0)
+        return {to_vec<D>(probe.sensor_centre), to_vec<D>(probe.sensor_normal)};
+    Vec<D> centre = to_vec<D>(probe.position);
+    centre[probe.sensor_axis] = Real(probe.sensor_surface);
+    Vec<D> normal = Vec<D>::Zero();
+    normal[probe.sensor_axis] = Real(probe.sensor_into_wall);
+    return {centre, normal};
+}
+
 // The footprint where the probe is now (moved with its object).
 template <int D>
 Box<D> footprint(const Simulation<D>& sim, const ProbeConfig& probe) {
@@ -336,6 +365,12 @@ void append_body_columns(const WallMotion<D>& motion, int frame, const Pose& pos
     }
 }
 
+// The same probe read as though its wall were held still at its t = 0 placement.
+inline ProbeConfig fixed_sensor(ProbeConfig probe) {
+    probe.frame = -1;
+    return probe;
+}
+
 // One row of a probe's CSV (after the time) from the particles of its footprint (a force
 // probe: its components, then its moment); a surge front from its merged columns.
 template <int D>
@@ -367,6 +402,20 @@ std::vector<double> probe_row(const Simulation<D>& sim, const Particles<D>& P,
             if (pose)
                 point = moved_point(point, *pose);
             return {double(pressure_probe(P, sim.kernel(), point, p_min))};
+        }
+        if (pose) {
+            // On a moving wall: the reading in the wall's frame (the walls' pressures were
+            // extrapolated with g - a_w), then where the sensor is now and its normal.
+            std::vector<double> row =
+                probe_row(sim, seen_from_object(P, *pose), contacts, fixed_sensor(probe));
+            const auto [centre, normal] = sensor_centre_normal<D>(probe);
+            const Vec<D> x = moved_point(centre, *pose);
+            const Vec<D> n = from_pose_point<D>(pose->direction(to_pose_point<D>(normal)));
+            for (int d = 0; d < D; ++d)
+                row.push_back(double(x[d]));
+            for (int d = 0; d < D; ++d)
+                row.push_back(double(n[d]));
+            return row;
         }
         if (probe.wall.mesh >= 0)
             return {double(mesh_sensor_reading(sim, P, probe))};

@@ -139,9 +139,17 @@ TEST_CASE("motion references and kinds") {
     CHECK(contains(
         expect_error(edit("[time]", "[runtime]\nrun_ahead = true\n[time]"), "motions[0].name"),
         "run_ahead"));
-    CHECK(contains(expect_error(edit("[particles]", "[numerics]\ndissipation = \"riemann\"\n"
-                                                    "[particles]"),
-                                "motions[0].name"),
+    // The Riemann dissipation takes prescribed motion (its wall states carry the wall's
+    // velocity); a free body's load is summed with the default dissipation's pairs.
+    const std::string riemann =
+        edit("[particles]", "[numerics]\ndissipation = \"riemann\"\n[particles]");
+    CHECK_NOTHROW(read_case(write_case("riemann_roll", riemann)));
+    CHECK(contains(expect_error(edit("hi = [0.5, 0.6]\n", "hi = [0.5, 0.6]\nmotion = \"float\"\n",
+                                     edit("[time]",
+                                          "[[motions]]\nname = \"float\"\nkind = "
+                                          "\"free_body\"\ndensity = 500\n[time]",
+                                          riemann)),
+                                "motions[1].kind"),
                    "artificial"));
     // A wave-maker needs its wave.
     const std::string piston =
@@ -190,6 +198,29 @@ TEST_CASE("probes that follow a motion, damping zones") {
     expect_error(edit("[time]", "[[probes]]\nname = \"front\"\ntype = \"surge_front\"\n"
                                 "frame = \"roll\"\n[time]"),
                  "probes[0].frame"); // before [time]: the first probe of the file
+    // An area sensor moves with the wall it sits on, told or not; on a fixed wall it cannot
+    // be given another motion's frame.
+    const std::string sensors =
+        kMoving + "[[probes]]\nname = \"wall\"\ntype = \"pressure\"\nposition = [0, 0.1]\n"
+                  "diameter = 0.04\n[[probes]]\nname = \"told\"\ntype = \"pressure\"\n"
+                  "position = [1, 0.1]\ndiameter = 0.04\nframe = \"roll\"\nreading = "
+                  "\"interpolated\"\n[[probes]]\nname = \"box\"\ntype = \"pressure\"\n"
+                  "position = [0.45, 0.5]\ndiameter = 0.04\n";
+    const CaseConfig s = read_case(write_case("sensors", sensors));
+    REQUIRE(s.probes.size() == 5);
+    CHECK(s.probes[2].frame == 0);
+    CHECK(s.probes[2].wall.face_axis == 0);
+    CHECK(!s.probes[2].wall.face_high);
+    CHECK(s.probes[3].frame == 0);
+    CHECK(s.probes[3].wall.face_high);
+    CHECK(s.probes[4].frame == -1);
+    CHECK(s.probes[4].wall.box == 0);
+    CHECK(contains(expect_error(edit("position = [0.45, 0.5]\ndiameter = 0.04\n",
+                                     "position = [0.45, 0.5]\ndiameter = 0.04\nframe = "
+                                     "\"roll\"\n",
+                                     sensors),
+                                "probes[4].frame"),
+                   "does not move"));
     const std::string zone =
         edit("[time]", "[[damping_zones]]\nstart = [0.7, 0]\nend = [1.0, 0]\nstrength = 5\n[time]");
     const CaseConfig c = read_case(write_case("zone", zone));

@@ -27,6 +27,13 @@
 //   drho_i/dt += 2 rho_i V_w F_iw [ v_i . dx + r dp/(2 rho_bar c0) ]
 // Unlike Zhang et al., the momentum equation takes no dissipation from fluid-wall pairs (see
 // riemann_acceleration): P* there is the density-weighted mean pressure.
+// Moving dummy walls: the wall particle carries its wall's velocity v_w, and the right state
+// is the mirror in the wall's frame, U_R = 2 U_w - U_L (as Adami et al. 2012's no-slip
+// velocity 2 v_w - <v>), so U* - U_w = dp/(2 rho_bar c0) and the wall term takes the
+// relative velocity:
+//   drho_i/dt += 2 rho_i V_w F_iw [ (v_i - v_w) . dx + r dp/(2 rho_bar c0) ]
+// and the momentum equation's wall pairs see the moving wall through its pressure
+// (extrapolated with g - a_w) and the no-slip v_bc.
 // The wall pressure is clipped below at the background pressure in the momentum equation,
 // as in momentum.hpp (a wall pushes, never pulls).
 #include "sluice/core/neighbourhood.hpp"
@@ -102,12 +109,13 @@ SLUICE_FLATTEN void riemann_acceleration(const Neighbourhood<D>& nb, const K& ke
 }
 
 // Density rate of the fluid particles of cell c, with `vel` the velocity the leap-frog
-// advances densities with (v^{n+1/2}; see continuity_rate).
+// advances densities with (v^{n+1/2}; see continuity_rate); with `moving_walls` the wall
+// particles' too (their prescribed velocity at mid-step), and wall pairs take v_i - v_w.
 template <int D, class K>
 SLUICE_FLATTEN void riemann_continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
                                             const RiemannParams<D>& prm, CellIndex c,
                                             const Particles<D>& P, std::span<const Vec<D>> vel,
-                                            std::span<Real> drho_out) {
+                                            std::span<Real> drho_out, bool moving_walls = false) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
     for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
@@ -126,8 +134,11 @@ SLUICE_FLATTEN void riemann_continuity_rate(const Neighbourhood<D>& nb, const K&
                 // Hydrostatic part of p_i - p_j: rho0 g . (x_i - x_j) (grad p = rho0 g).
                 const Real dp = p_i - P.p[j] - prm.rho0 * prm.gravity.dot(dx);
                 const Real rho_bar = Real(0.5) * (rho_i + rho_j);
-                if (P.kind[j] == Kind::wall)
-                    return 2 * V_j * Fij * (v_i.dot(dx) + r * dp / (2 * rho_bar * prm.c0));
+                if (P.kind[j] == Kind::wall) {
+                    // Fixed walls keep v_i alone (v_w = 0): the same arithmetic as before.
+                    const Real approach = moving_walls ? (v_i - vel[j]).dot(dx) : v_i.dot(dx);
+                    return 2 * V_j * Fij * (approach + r * dp / (2 * rho_bar * prm.c0));
+                }
                 return V_j * Fij * ((v_i - vel[j]).dot(dx) + r * dp / (rho_bar * prm.c0));
             });
         drho_out[i] = rho_i * rate;

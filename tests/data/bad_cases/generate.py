@@ -312,6 +312,26 @@ def structured(base, doc):
         add("probe_type", set_at("probes[0].type", "pressur"), "probes[0].type")
         add("probe_interval", set_at("probes[0].interval", -1.0), "probes[0].interval")
         add("probe_interval_tiny", set_at("probes[0].interval", 1e-300), "probes[0].interval")
+    if base == "db2":
+        # An area sensor rides with its wall: a frame on a fixed wall is refused. A free body
+        # takes the default dissipation only.
+        def sensor_frame_fixed(d):
+            d.setdefault("walls", {})["boxes"] = [dict(SAMPLE_ENTRIES["walls.boxes"],
+                                                       motion="m")]
+            d["motions"] = [{"name": "m", "kind": "sway", **SAMPLE_MOTIONS["sway"]}]
+            d["probes"].insert(0, dict(SAMPLE_ENTRIES["area"], frame="m"))
+            return d
+        add("area_sensor_frame_fixed_wall", sensor_frame_fixed, "probes[0].frame")
+
+        def free_body_riemann(d):
+            for k in ("delta_sph", "artificial_viscosity"):
+                d["numerics"].pop(k, None)
+            d["numerics"]["dissipation"] = "riemann"
+            d.setdefault("walls", {})["boxes"] = [dict(SAMPLE_ENTRIES["walls.boxes"],
+                                                       motion="m")]
+            d["motions"] = [{"name": "m", "kind": "free_body", **SAMPLE_MOTIONS["free_body"]}]
+            return d
+        add("free_body_riemann", free_body_riemann, "motions[0].kind")
     if "probes" in doc and doc["probes"][0]["type"] == "pressure":
         add("probe_position_out", set_at("probes[0].position", [-5.0] * dim), "probes[0].position")
         add("probe_position_nan", set_at("probes[0].position", [float("nan")] * dim),

@@ -300,7 +300,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
             if (riemann_dissipation_)
                 riemann_continuity_rate(nb, kernel, riemann_, c, P_,
                                         std::span<const Vec<D>>(P_.v_half),
-                                        std::span<Real>(P_.drho));
+                                        std::span<Real>(P_.drho), moving_walls);
             else if (continuity_ && momentum_lanes_) // the records hold x, rho, m, wall
                 continuity_rate_lanes(nb, diffusion_, c, P_, momentum_records_.data(),
                                       std::span<const Vec<D>>(P_.v_half), std::span<Real>(P_.drho),
