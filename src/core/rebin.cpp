@@ -33,12 +33,19 @@ bool Rebinner<D>::operator()(const CellGrid<D>& grid, Particles<D>& P, CellRange
         distinct_.erase(std::unique(distinct_.begin(), distinct_.end()), distinct_.end());
         place_.resize(n);
         start_.assign(distinct_.size(), 0);
+        // A run's key is mostly the one after the previous run's (the order is nearly
+        // sorted): that is checked before a binary search.
         for (std::size_t i = 0; i < n; ++i) {
-            place_[i] = i > 0 && key_[i] == key_[i - 1]
-                            ? place_[i - 1]
-                            : static_cast<std::uint32_t>(
-                                  std::lower_bound(distinct_.begin(), distinct_.end(), key_[i]) -
-                                  distinct_.begin());
+            if (i > 0 && key_[i] == key_[i - 1]) {
+                place_[i] = place_[i - 1];
+            } else {
+                const std::size_t next = i > 0 ? place_[i - 1] + std::size_t{1} : 0;
+                place_[i] = static_cast<std::uint32_t>(
+                    next < distinct_.size() && distinct_[next] == key_[i]
+                        ? next
+                        : std::lower_bound(distinct_.begin(), distinct_.end(), key_[i]) -
+                              distinct_.begin());
+            }
             ++start_[place_[i]];
         }
         std::uint32_t running = 0;
