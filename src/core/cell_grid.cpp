@@ -18,6 +18,10 @@ CellGrid<D> CellGrid<D>::make(const Vec<D>& lo, const Vec<D>& hi, Real min_edge,
             n = 1;
         if (periodic[d] && n < 3)
             throw std::invalid_argument("periodic axis shorter than 3 kernel supports");
+        // Morton keys interleave 21 bits per axis in 3-D (63 of a 64-bit key) and 32 in 2-D
+        // (where `int` cells per axis is the tighter bound).
+        if (D == 3 && n > (1 << 21))
+            throw std::invalid_argument("grid: more than 2^21 cells along an axis in 3-D");
         g.dims[d] = n;
         g.edge[d] = g.length[d] / Real(n);
         g.inv_edge[d] = 1 / g.edge[d];

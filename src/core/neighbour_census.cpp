@@ -25,46 +25,46 @@ NeighbourCensus count_neighbours(const CellGrid<D>& grid, std::span<const Vec<D>
                                  std::span<Real> nearest_out) {
     if (!nearest_out.empty() && nearest_out.size() != x.size())
         throw std::invalid_argument("count_neighbours: `nearest` must have an entry per particle");
-    // Positions and kinds sorted by cell (a counting sort; the order inside a cell does not
-    // change a count): 21-29 bytes per particle, not a copy of every field.
+    // Positions and kinds sorted by cell (the order inside a cell does not change a count),
+    // through a sort of (cell, index) pairs: memory per particle, none per cell of the grid.
     const std::size_t n = x.size();
-    std::vector<CellIndex> cell(n);
+    std::vector<std::pair<CellIndex, std::uint32_t>> by_cell(n);
+    for (std::size_t i = 0; i < n; ++i)
+        by_cell[i] = {grid.linear(grid.coords(x[i])), static_cast<std::uint32_t>(i)};
+    std::sort(by_cell.begin(), by_cell.end());
     CellRanges ranges;
-    ranges.begin.assign(grid.cell_count(), 0);
-    ranges.end.assign(grid.cell_count(), 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        cell[i] = grid.linear(grid.coords(x[i]));
-        ++ranges.end[cell[i]];
-    }
-    std::uint32_t running = 0;
     std::vector<CellIndex> occupied;
-    for (CellIndex c = 0; c < grid.cell_count(); ++c) {
-        ranges.begin[c] = running;
-        running += ranges.end[c];
-        ranges.end[c] = ranges.begin[c];
-        if (running > ranges.begin[c])
-            occupied.push_back(c);
+    for (std::size_t i = 0; i < n; ++i)
+        if (i == 0 || by_cell[i].first != by_cell[i - 1].first)
+            occupied.push_back(by_cell[i].first);
+    ranges.reset(occupied.size());
+    for (std::size_t i = 0; i < n;) {
+        std::size_t j = i + 1;
+        while (j < n && by_cell[j].first == by_cell[i].first)
+            ++j;
+        ranges.set(by_cell[i].first, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
+        i = j;
     }
     std::vector<Vec<D>> xs(n);
     std::vector<Kind> ks(n);
     std::vector<std::uint32_t> given; // sorted place -> index in x (only for nearest_out)
     if (!nearest_out.empty())
         given.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t at = ranges.end[cell[i]]++;
+    for (std::size_t at = 0; at < n; ++at) {
+        const std::uint32_t i = by_cell[at].second;
         xs[at] = x[i];
         ks[at] = kind[i];
         if (!given.empty())
-            given[at] = static_cast<std::uint32_t>(i);
+            given[at] = i;
     }
-    cell = {};
+    by_cell = {};
     const Neighbourhood<D> nb{&grid, &ranges, std::span<const Vec<D>>(xs), support};
     NeighbourCensus census;
     for (const CellIndex c : occupied) {
         if (!counted(grid.morton(grid.unlinear(c))))
             continue;
         const AdjacentCells<D> adj = nb.adjacent(c);
-        for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+        for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
             const bool i_fluid = ks[i] == Kind::fluid;
             (i_fluid ? census.fluid : census.wall) += 1;
             std::uint64_t to_fluid = 0, to_wall = 0;

@@ -1,75 +1,62 @@
 #include "sluice/core/rebin.hpp"
 
 #include <algorithm>
-#include <limits>
-#include <numeric>
 
 namespace sluice {
 
 template <int D>
-void Rebinner<D>::prepare(const CellGrid<D>& grid) {
-    if (!morton_order_.empty() && grid.dims == dims_)
-        return;
-    dims_ = grid.dims;
-    const std::size_t cells = grid.cell_count();
-    std::vector<MortonKey> key(cells);
-    for (std::size_t c = 0; c < cells; ++c)
-        key[c] = grid.morton(grid.unlinear(static_cast<CellIndex>(c)));
-    morton_order_.resize(cells);
-    std::iota(morton_order_.begin(), morton_order_.end(), CellIndex{0});
-    std::sort(morton_order_.begin(), morton_order_.end(),
-              [&](CellIndex a, CellIndex b) { return key[a] < key[b]; });
-    morton_keys_.resize(cells);
-    for (std::size_t k = 0; k < cells; ++k)
-        morton_keys_[k] = key[morton_order_[k]];
-    start_.assign(cells, 0);
-}
-
-template <int D>
 bool Rebinner<D>::operator()(const CellGrid<D>& grid, Particles<D>& P, CellRanges& ranges,
                              std::vector<CellOccupancy>& occupied) {
-    prepare(grid);
     const std::size_t n = P.size();
     key_.resize(n);
     cell_.resize(n);
     bool sorted = true;
-    MortonKey lowest = std::numeric_limits<MortonKey>::max(), highest = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const auto c = grid.coords(P.x[i]);
         key_[i] = grid.morton(c);
         cell_[i] = grid.linear(c);
-        lowest = std::min(lowest, key_[i]);
-        highest = std::max(highest, key_[i]);
         if (i > 0 && (key_[i] < key_[i - 1] || (key_[i] == key_[i - 1] && P.id[i] < P.id[i - 1])))
             sorted = false;
     }
     if (!sorted) {
         // Counting sort by cell, cells taken in Morton order, stable. The few particles that
         // entered a cell this step then sit among its others in storage order, so each cell's
-        // run is put back in id order by an insertion sort (nearly sorted). Only the cells
-        // between the lowest and the highest key present are walked: a rank's particles lie
-        // in its own stretch of the curve (plus a little for those about to leave), so the
-        // sort costs O(n + the rank's cells), not O(n + the grid's).
+        // run is put back in id order by an insertion sort (nearly sorted). The sort's slots
+        // are the distinct keys present (a key is a cell), found from the runs of equal keys
+        // of the previous order: O(n + cells log cells) in the rank's particles and occupied
+        // cells, nothing per cell of the grid.
+        distinct_.clear();
         for (std::size_t i = 0; i < n; ++i)
-            ++start_[cell_[i]];
-        const auto from = std::lower_bound(morton_keys_.begin(), morton_keys_.end(), lowest);
-        const auto to = std::upper_bound(from, morton_keys_.end(), highest);
-        const auto first = static_cast<std::size_t>(from - morton_keys_.begin());
-        const auto last = static_cast<std::size_t>(to - morton_keys_.begin());
+            if (i == 0 || key_[i] != key_[i - 1])
+                distinct_.push_back(key_[i]);
+        std::sort(distinct_.begin(), distinct_.end());
+        distinct_.erase(std::unique(distinct_.begin(), distinct_.end()), distinct_.end());
+        place_.resize(n);
+        start_.assign(distinct_.size(), 0);
+        // A run's key is mostly the one after the previous run's (the order is nearly
+        // sorted): that is checked before a binary search.
+        for (std::size_t i = 0; i < n; ++i) {
+            if (i > 0 && key_[i] == key_[i - 1]) {
+                place_[i] = place_[i - 1];
+            } else {
+                const std::size_t next = i > 0 ? place_[i - 1] + std::size_t{1} : 0;
+                place_[i] = static_cast<std::uint32_t>(
+                    next < distinct_.size() && distinct_[next] == key_[i]
+                        ? next
+                        : std::lower_bound(distinct_.begin(), distinct_.end(), key_[i]) -
+                              distinct_.begin());
+            }
+            ++start_[place_[i]];
+        }
         std::uint32_t running = 0;
-        for (std::size_t k = first; k < last; ++k) {
-            const CellIndex c = morton_order_[k];
-            const std::uint32_t count = start_[c];
-            if (count == 0)
-                continue; // empty cells keep their zero
-            start_[c] = running;
+        for (std::uint32_t& s : start_) {
+            const std::uint32_t count = s;
+            s = running;
             running += count;
         }
         perm_.resize(n);
         for (std::size_t i = 0; i < n; ++i)
-            perm_[start_[cell_[i]]++] = i;
-        for (std::size_t i = 0; i < n; ++i)
-            start_[cell_[i]] = 0; // back to all zeros for the next call
+            perm_[start_[place_[i]]++] = i;
         for (std::size_t b = 0; b < n;) {
             std::size_t e = b + 1;
             while (e < n && cell_[perm_[e]] == cell_[perm_[b]])
@@ -93,15 +80,16 @@ bool Rebinner<D>::operator()(const CellGrid<D>& grid, Particles<D>& P, CellRange
         key_.swap(key_sorted_);
         cell_.swap(cell_sorted_);
     }
-    ranges.reset(grid.cell_count());
+    std::size_t runs = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        runs += i == 0 || cell_[i] != cell_[i - 1] ? 1 : 0;
+    ranges.reset(runs);
     occupied.clear();
     for (std::size_t i = 0; i < n;) {
         std::size_t j = i;
         while (j < n && cell_[j] == cell_[i])
             ++j;
-        ranges.begin[cell_[i]] = static_cast<std::uint32_t>(i);
-        ranges.end[cell_[i]] = static_cast<std::uint32_t>(j);
-        ranges.owned_cells.push_back(cell_[i]);
+        ranges.set(cell_[i], static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
         occupied.push_back({cell_[i], key_[i], static_cast<std::uint32_t>(j - i)});
         i = j;
     }

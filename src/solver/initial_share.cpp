@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <unordered_map>
 
 namespace sluice {
 
@@ -22,16 +23,16 @@ template <int D>
 InitialCensus initial_census(const CaseConfig& cfg, const Eos& eos, int layers,
                              const CellGrid<D>& grid) {
     InitialCensus census;
-    std::vector<std::uint32_t> count(grid.cell_count(), 0);
+    // Particles per occupied cell (by key): memory per occupied cell, none per cell of the grid.
+    std::unordered_map<MortonKey, std::uint32_t> count;
     visit_case<D>(cfg, eos, layers, [&](const InitialParticle<D>& q) {
-        ++count[grid.linear(grid.coords(q.x))];
+        ++count[grid.morton(grid.coords(q.x))];
         ++census.particles;
         census.max_speed = std::max(census.max_speed, q.v.norm());
     });
-    for (std::size_t c = 0; c < count.size(); ++c)
-        if (count[c] > 0)
-            census.cells.push_back(
-                {grid.morton(grid.unlinear(static_cast<CellIndex>(c))), double(count[c])});
+    census.cells.reserve(count.size());
+    for (const auto& [key, n] : count)
+        census.cells.push_back({key, double(n)});
     std::sort(census.cells.begin(), census.cells.end(),
               [](const auto& a, const auto& b) { return a.key < b.key; });
     return census;

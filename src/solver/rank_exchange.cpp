@@ -52,7 +52,7 @@ void RankExchange<D>::distribute(Particles<D>& P, bool shares, bool key_range) {
     std::vector<tasks::Bytes> out(static_cast<std::size_t>(comm_.size())), in;
     for (const auto& c : occupied) {
         const int owner = layout_.rank_of(c.key);
-        for (std::uint32_t i = ranges.begin[c.cell]; i < ranges.end[c.cell]; ++i)
+        for (std::uint32_t i = ranges.begin(c.cell), stop = ranges.end(c.cell); i < stop; ++i)
             if (owner == comm_.rank())
                 keep.push_back(i);
             else
@@ -124,7 +124,7 @@ RankExchange<D>::plan_halo(Particles<D>& P, const CellRanges& ranges,
         if (occupied_targets_[k].empty())
             continue;
         std::size_t walls = 0;
-        for (std::uint32_t i = ranges.begin[cells[k]]; i < ranges.end[cells[k]]; ++i)
+        for (std::uint32_t i = ranges.begin(cells[k]), stop = ranges.end(cells[k]); i < stop; ++i)
             walls += P.kind[i] == Kind::wall ? 1 : 0;
         for (int p : occupied_targets_[k]) {
             const auto pu = static_cast<std::size_t>(p);

@@ -251,7 +251,7 @@ void Simulation<D>::rebin_and_decompose() {
             for (const auto& cells : topo_.cells) {
                 double c = 0;
                 for (CellIndex cell : cells)
-                    c += ranges_.end[cell] - ranges_.begin[cell];
+                    c += ranges_.end(cell) - ranges_.begin(cell);
                 worst = std::max(worst, c);
             }
             regroup = worst > 2 * mean;

@@ -19,13 +19,13 @@ std::optional<typename Simulation<D>::PlannedCut> Simulation<D>::plan_rebalance(
         const auto& cells = topo_.cells[static_cast<std::size_t>(g)];
         double particles = 0;
         for (CellIndex c : cells)
-            particles += ranges_.end[c] - ranges_.begin[c];
+            particles += ranges_.end(c) - ranges_.begin(c);
         const double per_particle = tasks::cost_per_particle(
             cfg_.balance_cost == BalanceCost::time, group_busy_[static_cast<std::size_t>(g)],
             graph_steps_, particles);
         for (CellIndex c : cells)
             mine.push_back({grid_.morton(grid_.unlinear(c)),
-                            per_particle * (ranges_.end[c] - ranges_.begin[c])});
+                            per_particle * (ranges_.end(c) - ranges_.begin(c))});
     }
     auto plan = balance_.plan(ranks_.all_units(mine), ranks_.layout());
     if (!plan)

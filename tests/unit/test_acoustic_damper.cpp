@@ -23,7 +23,7 @@ std::vector<double> divergences(const Lattice& L) {
     const auto nb = L.nb();
     for (const auto& c : L.occ) {
         const AdjacentCells<2> adj = nb.adjacent(c.cell);
-        for (std::uint32_t i = nb.begin(c.cell); i < nb.end(c.cell); ++i)
+        for (std::uint32_t i = nb.begin(c.cell), stop = nb.end(c.cell); i < stop; ++i)
             div[i] = velocity_divergence(nb, L.kernel, adj, i, L.P);
     }
     return div;

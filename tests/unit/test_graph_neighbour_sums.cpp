@@ -63,7 +63,7 @@ struct Fixture {
                         continue;
                     }
                     const auto adj = nb.adjacent(c);
-                    for (auto i = nb.begin(c); i < nb.end(c); ++i) {
+                    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
                         Real s = 0;
                         nb.for_each_neighbour(adj, i, [&](std::uint32_t j, const Vec<D>&, Real r2) {
                             s += P.mass[j] * P.rho[j] * kernel.W(std::sqrt(r2));
@@ -133,7 +133,7 @@ TEST_CASE("Rebin sorts by (Morton key, id) and cell ranges cover every particle 
     std::size_t covered = 0;
     for (const auto& c : f.occupied) {
         covered += c.count;
-        for (auto i = f.ranges.begin[c.cell] + 1; i < f.ranges.end[c.cell]; ++i)
+        for (auto i = f.ranges.begin(c.cell) + 1; i < f.ranges.end(c.cell); ++i)
             CHECK(f.P.id[i - 1] < f.P.id[i]);
     }
     CHECK(covered == f.P.size());

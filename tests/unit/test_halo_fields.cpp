@@ -31,11 +31,9 @@ struct Pair {
             from.v_half[i] = Vec<2>(Real(i), Real(-1));
         }
         const CellIndex cell = grid.linear(grid.coords(from.x[0]));
-        for (CellRanges* r : {&from_ranges, &to_ranges}) {
-            r->begin.assign(grid.cell_count(), 0);
-            r->end.assign(grid.cell_count(), 0);
-        }
-        from_ranges.end[cell] = 3;
+        for (CellRanges* r : {&from_ranges, &to_ranges})
+            r->reset(1);
+        from_ranges.set(cell, 0, 3);
         plan.send_cells = {{cell}};
         plan.send_count = {3};
         plan.send_walls = {1};
@@ -104,14 +102,13 @@ TEST_CASE("the state brings the halo particles and their cells' ranges") {
     CHECK(pair.to.id == pair.from.id);
     CHECK(pair.to.x == pair.from.x);
     const CellIndex cell = pair.grid.linear(pair.grid.coords(pair.from.x[0]));
-    CHECK(pair.to_ranges.begin[cell] == 0);
-    CHECK(pair.to_ranges.end[cell] == 3);
-    // The unpack lists the cell it set, so that a reset clears it without a pass over the grid.
-    REQUIRE(pair.to_ranges.halo_cells.size() == 1);
-    CHECK(pair.to_ranges.halo_cells[0] == std::vector<CellIndex>{cell});
-    pair.to_ranges.reset(pair.grid.cell_count());
-    CHECK(pair.to_ranges.end[cell] == 0);
-    CHECK(pair.to_ranges.halo_cells[0].empty());
+    CHECK(pair.to_ranges.begin(cell) == 0);
+    CHECK(pair.to_ranges.end(cell) == 3);
+    // The halo cell is the one cell stored; a reset clears it.
+    CHECK(pair.to_ranges.stored() == 1);
+    pair.to_ranges.reset(1);
+    CHECK(pair.to_ranges.end(cell) == 0);
+    CHECK(pair.to_ranges.stored() == 0);
 }
 
 } // namespace

@@ -10,7 +10,9 @@
 
 namespace sluice {
 
-using CellIndex = std::uint32_t; // linear (row-major) index of a cell
+// Linear (row-major) index of a cell in the whole grid, 64-bit so that grids beyond 2^32 cells
+// work; a rank stores per-cell data only for the cells it holds (CellRanges, cell_ranges.hpp).
+using CellIndex = std::uint64_t;
 using MortonKey = std::uint64_t;
 
 // Spreads the low bits of v so that they occupy every D-th bit.
@@ -132,37 +134,6 @@ struct NeighbourCell {
 // Adjacent cells of c (itself included) in a fixed order: offsets -1..1, last axis slowest.
 template <int D>
 int adjacent_cells(const CellGrid<D>& grid, CellIndex c, NeighbourCell<D>* out);
-
-// Where each cell's particles are in the sorted arrays: [begin[c], end[c]). Dense over the
-// grid (a lookup by cell index), but every writer lists the cells it set, so that clearing
-// costs the cells a rank has, not the whole grid's (on many ranks each rank fills a small part
-// of it).
-struct CellRanges {
-    std::vector<std::uint32_t> begin, end;
-    std::vector<CellIndex> owned_cells;             // set by the rebin
-    std::vector<std::vector<CellIndex>> halo_cells; // per peer, set by that peer's halo unpack
-
-    // Every range empty, for a grid of `cells` cells.
-    void reset(std::size_t cells) {
-        if (begin.size() != cells || end.size() != cells) {
-            begin.assign(cells, 0);
-            end.assign(cells, 0);
-        } else {
-            clear_listed(owned_cells);
-            for (auto& list : halo_cells)
-                clear_listed(list);
-        }
-        owned_cells.clear();
-        for (auto& list : halo_cells)
-            list.clear();
-    }
-
-private:
-    void clear_listed(const std::vector<CellIndex>& cells) {
-        for (const CellIndex c : cells)
-            begin[c] = end[c] = 0;
-    }
-};
 
 extern template struct CellGrid<2>;
 extern template struct CellGrid<3>;

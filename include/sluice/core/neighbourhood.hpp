@@ -3,6 +3,7 @@
 // cells in the order of adjacent_cells(), particles inside a cell by id) is what makes every
 // neighbour sum, and so the whole result, independent of threads, groups and ranks.
 #include "sluice/core/cell_grid.hpp"
+#include "sluice/core/cell_ranges.hpp"
 #include "sluice/core/lanes.hpp"
 
 #include <array>
@@ -11,10 +12,12 @@
 
 namespace sluice {
 
-// The adjacent cells of one cell, computed once and reused for all its particles.
+// The adjacent cells of one cell and their particle ranges, computed once and reused for all
+// its particles (a range lookup is a hash probe, CellRanges).
 template <int D>
 struct AdjacentCells {
     NeighbourCell<D> cell[D == 2 ? 9 : 27];
+    CellRanges::Range range[D == 2 ? 9 : 27];
     int count = 0;
 };
 
@@ -50,9 +53,14 @@ struct Neighbourhood {
     // never looks at them, and finding them was 3 % of a step).
     [[nodiscard]] AdjacentCells<D> adjacent(CellIndex c) const {
         AdjacentCells<D> a;
-        if (list != nullptr && cells->begin[c] < cells->end[c] && list->covers(cells->begin[c]))
-            return a;
+        if (list != nullptr) {
+            const CellRanges::Range own = cells->range(c);
+            if (own.begin < own.end && list->covers(own.begin))
+                return a;
+        }
         a.count = adjacent_cells(*grid, c, a.cell);
+        for (int k = 0; k < a.count; ++k)
+            a.range[k] = cells->range(a.cell[k].cell);
         return a;
     }
 
@@ -68,10 +76,9 @@ struct Neighbourhood {
         const Real support2 = support * support;
         const Vec<D> xi = x[i];
         for (int k = 0; k < adj.count; ++k) {
-            const CellIndex nc = adj.cell[k].cell;
             const Vec<D> xis = xi + adj.cell[k].shift;
-            const std::uint32_t e = cells->end[nc];
-            for (std::uint32_t j = cells->begin[nc]; j < e; ++j) {
+            const std::uint32_t e = adj.range[k].end;
+            for (std::uint32_t j = adj.range[k].begin; j < e; ++j) {
                 const Vec<D> dx = xis - x[j];
                 const Real r2 = dx.squaredNorm();
                 if (r2 < support2)
@@ -236,7 +243,7 @@ public:
     SLUICE_FLATTEN void build_list(std::span<const CellIndex> group_cells, NeighbourList<D>& out,
                                    const G& factor, const Partial& partial,
                                    const Wanted& wanted) const {
-        out.first = group_cells.empty() ? 0 : cells->begin[group_cells.front()];
+        out.first = group_cells.empty() ? 0 : begin(group_cells.front());
         out.adjacent.resize(group_cells.size());
         std::size_t n_particles = 0;
         for (std::size_t g = 0; g < group_cells.size(); ++g) {
@@ -266,21 +273,21 @@ public:
             const AdjacentCells<D>& adj = out.adjacent[g];
             std::size_t candidates = 0;
             for (int k = 0; k < adj.count; ++k)
-                candidates += end(adj.cell[k].cell) - begin(adj.cell[k].cell);
-            for (std::uint32_t i = begin(c); i < end(c); ++i) {
+                candidates += adj.range[k].end - adj.range[k].begin;
+            const CellRanges::Range own = cells->range(c);
+            for (std::uint32_t i = own.begin; i < own.end; ++i) {
                 reserve(n + candidates);
                 std::uint32_t* js = out.j.data();
                 Real* r2s = out.factor.data();
                 const Vec<D> xi = x[i];
                 const bool all = !partial(i);
                 for (int k = 0; k < adj.count; ++k) {
-                    const CellIndex nc = adj.cell[k].cell;
                     const Vec<D> xis = xi + adj.cell[k].shift;
-                    const std::uint32_t e = end(nc);
+                    const std::uint32_t b = adj.range[k].begin, e = adj.range[k].end;
                     // Branch-free compaction: every candidate is written at n and kept by
                     // advancing n. About a third are kept, so an `if` mispredicts often.
                     if (periodic)
-                        for (std::uint32_t j = begin(nc); j < e; ++j) {
+                        for (std::uint32_t j = b; j < e; ++j) {
                             const Real r2 = (xis - x[j]).squaredNorm();
                             out.shift[n] = adj.cell[k].shift;
                             js[n] = j;
@@ -288,14 +295,14 @@ public:
                             n += r2 < support2 && (all || wanted(j)) ? 1 : 0;
                         }
                     else if (all)
-                        for (std::uint32_t j = begin(nc); j < e; ++j) {
+                        for (std::uint32_t j = b; j < e; ++j) {
                             const Real r2 = (xis - x[j]).squaredNorm();
                             js[n] = j;
                             r2s[n] = r2;
                             n += r2 < support2 ? 1 : 0;
                         }
                     else
-                        for (std::uint32_t j = begin(nc); j < e && wanted(j); ++j) {
+                        for (std::uint32_t j = b; j < e && wanted(j); ++j) {
                             const Real r2 = (xis - x[j]).squaredNorm();
                             js[n] = j;
                             r2s[n] = r2;
@@ -402,10 +409,10 @@ public:
     }
 
     [[nodiscard]] std::uint32_t begin(CellIndex c) const {
-        return cells->begin[c];
+        return cells->begin(c);
     }
     [[nodiscard]] std::uint32_t end(CellIndex c) const {
-        return cells->end[c];
+        return cells->end(c);
     }
 };
 

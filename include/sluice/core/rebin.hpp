@@ -3,6 +3,7 @@
 // are then contiguous, cells follow the space-filling curve, and the order inside a cell is
 // a property of the particles, not of the history of the run.
 #include "sluice/core/cell_grid.hpp"
+#include "sluice/core/cell_ranges.hpp"
 #include "sluice/core/particles.hpp"
 
 #include <array>
@@ -16,10 +17,10 @@ struct CellOccupancy {
     std::uint32_t count;
 };
 
-// Sorts P (if needed), fills `ranges` for every cell of the grid (clearing only the cells it
-// and the halo unpacks listed there last time) and lists the occupied cells in Morton order.
-// Returns true when the order changed. Keeps its buffers and the Morton order of the grid's
-// cells between calls (the solver rebins at every Verlet-list rebuild).
+// Sorts P (if needed), sets `ranges` for the cells holding particles (clearing every other
+// range, the halo's included) and lists the occupied cells in Morton order. Returns true when
+// the order changed. Keeps its buffers between calls (the solver rebins at every Verlet-list
+// rebuild); none of them is per cell of the grid, so its memory follows the particles.
 template <int D>
 class Rebinner {
 public:
@@ -27,13 +28,11 @@ public:
                     std::vector<CellOccupancy>& occupied);
 
 private:
-    void prepare(const CellGrid<D>& grid);
-    std::array<int, D> dims_{};
-    std::vector<CellIndex> morton_order_; // every cell of the grid, in Morton order
-    std::vector<MortonKey> morton_keys_;  // their keys (sorted)
-    std::vector<std::uint32_t> start_;    // per cell: counting-sort offsets (zero between calls)
     std::vector<MortonKey> key_, key_sorted_;
     std::vector<CellIndex> cell_, cell_sorted_;
+    std::vector<MortonKey> distinct_;  // the particles' keys, sorted, once each
+    std::vector<std::uint32_t> place_; // per particle: its key's position in distinct_
+    std::vector<std::uint32_t> start_; // per distinct key: counting-sort offsets
     std::vector<std::size_t> perm_;
 };
 

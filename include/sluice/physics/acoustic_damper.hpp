@@ -62,7 +62,7 @@ template <int D, class K>
 void apply_acoustic_damper(const Neighbourhood<D>& nb, const K& kernel, Real nu_a, CellIndex c,
                            const Particles<D>& P, std::span<Real> p, std::span<Real> p_over_rho2) {
     const AdjacentCells<D> adj = nb.adjacent(c);
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
         const Real rho = P.rho[i];

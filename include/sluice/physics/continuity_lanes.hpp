@@ -37,7 +37,7 @@ continuity_lanes_cell(const Neighbourhood<2>& nb, const DensityDiffusionParams<2
     // Two values per particle (static_assert'ed by Neighbourhood::lane_sum_over_pairs).
     const Real* v = reinterpret_cast<const Real*>(vel.data());
     const Real* g = reinterpret_cast<const Real*>(P.grad_rho.data());
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
         const MomentumNeighbour<2>& self = records[i];

@@ -17,7 +17,7 @@ template <int D, class K>
 SLUICE_FLATTEN void summation_density(const Neighbourhood<D>& nb, const K& kernel, CellIndex c,
                                       const Particles<D>& P, std::span<Real> rho_out) {
     const AdjacentCells<D> adj = nb.adjacent(c);
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
         Real rho = 0;
@@ -47,7 +47,7 @@ SLUICE_FLATTEN void renormalised_density_gradient(const Neighbourhood<D>& nb, co
     const Kind* const kind = P.kind.data();
     const Real* const rho = P.rho.data();
     const Real* const mass = P.mass.data();
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
         if (kind[i] != Kind::fluid)
             continue;
         const Real rho_i = rho[i];
@@ -122,7 +122,7 @@ SLUICE_FLATTEN void continuity_rate(const Neighbourhood<D>& nb, const K& kernel,
     const auto run = [&]<bool diffuse, DensityDiffusion form, bool moving>() {
         constexpr bool antuono = diffuse && form == DensityDiffusion::antuono;
         constexpr bool fourtakas = diffuse && form == DensityDiffusion::fourtakas;
-        for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+        for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
             if (P.kind[i] != Kind::fluid)
                 continue;
             const Real rho_i = P.rho[i];
@@ -182,7 +182,7 @@ template <int D>
 void equation_of_state(const Neighbourhood<D>& nb, const Eos& eos, CellIndex c,
                        const Particles<D>& P, std::span<Real> p_out,
                        std::span<Real> p_over_rho2_out, std::span<Real> volume_out) {
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i)
         if (P.kind[i] == Kind::fluid) {
             const Real rho = P.rho[i];
             const Real p = eos.pressure(rho);

@@ -117,7 +117,7 @@ SLUICE_FLATTEN void acceleration_cell(const Neighbourhood<D>& nb, const K& kerne
     const Vec<D>* const vel = P.v.data();
     const Vec<D>* const v_bc = P.v_bc.data();
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
         if (kind[i] != Kind::fluid)
             continue;
         const Real rho_i = rho[i];

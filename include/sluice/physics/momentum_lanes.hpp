@@ -36,7 +36,7 @@ acceleration_lanes_cell(const Neighbourhood<2>& nb, const MomentumParams<2>& prm
     const Mask4 artificial_on_walls = prm.wall_artificial ? all : none;
     const Real4 zero{0, 0, 0, 0};
     const NeighbourList<2>& list = *nb.list;
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
         const MomentumNeighbour<2>& self = records[i];

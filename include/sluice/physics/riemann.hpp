@@ -74,7 +74,7 @@ SLUICE_FLATTEN void riemann_acceleration(const Neighbourhood<D>& nb, const K& ke
     const Real eta2 = Real(0.01) * prm.h * prm.h;
     const Real two_mu = 2 * prm.mu;
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
         const Real rho_i = P.rho[i];
@@ -118,7 +118,7 @@ SLUICE_FLATTEN void riemann_continuity_rate(const Neighbourhood<D>& nb, const K&
                                             std::span<Real> drho_out, bool moving_walls = false) {
     const AdjacentCells<D> adj = nb.adjacent(c);
     const auto F = [&kernel](Real r2) { return grad_factor(kernel, r2); };
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
         const Real rho_i = P.rho[i];

@@ -26,7 +26,7 @@ SLUICE_FLATTEN void particle_shift(const Neighbourhood<D>& nb, const K& kernel,
                                    std::span<Vec<D>> shift_out) {
     constexpr Real R = Real(0.2);
     const AdjacentCells<D> adj = nb.adjacent(c);
-    for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+    for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
         if (P.kind[i] != Kind::fluid)
             continue;
         Vec<D> s = Vec<D>::Zero();

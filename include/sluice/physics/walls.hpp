@@ -73,7 +73,7 @@ SLUICE_FLATTEN void dummy_wall_state(const Neighbourhood<D>& nb, const K& kernel
                                      CellIndex c, Particles<D>& P,
                                      const WallKinematics& wall = {}) {
     const AdjacentCells<D> adj = nb.adjacent(c);
-    for (std::uint32_t w = nb.begin(c); w < nb.end(c); ++w) {
+    for (std::uint32_t w = nb.begin(c), stop = nb.end(c); w < stop; ++w) {
         if (P.kind[w] != Kind::wall)
             continue;
         AdamiSums<D> sums;

@@ -7,13 +7,13 @@
 // step (HaloFields::state) is the one field every scheme sends first. Pure data movement
 // between the arrays and byte buffers; the step graph decides when, MPI is the runtime's.
 #include "sluice/core/cell_grid.hpp"
+#include "sluice/core/cell_ranges.hpp"
 #include "sluice/core/particles.hpp"
 #include "sluice/solver/halo_plan.hpp"
 #include "sluice/tasks/step_graph.hpp"
 
 #include <cstring>
 #include <optional>
-#include <stdexcept>
 #include <vector>
 
 namespace sluice {
@@ -63,12 +63,16 @@ public:
     // Whether this step's state exchange records the halo cells' particle ranges: only on
     // steps that rebuild the neighbour lists (between rebuilds the particles stay where they
     // were sorted, although they may have moved into the next cell). Called by the main
-    // thread before the step: the unpacks, which run as tasks, list the cells they set in
-    // their own peer's list of `ranges` (so that the next rebin clears only those).
+    // thread before the step: it reserves room in `ranges` for a cell per halo particle (at
+    // most), so that the unpacks, which run as concurrent tasks, insert without growing it.
     void record_halo_cells(bool rebuilt) {
         assign_cells_ = rebuilt;
-        if (rebuilt)
-            ranges_.halo_cells.resize(plan_.recv_offset.size());
+        if (rebuilt) {
+            std::size_t halo = 0;
+            for (const std::size_t n : plan_.recv_count)
+                halo += n;
+            ranges_.reserve(halo);
+        }
     }
 
     // reference_positions: with a Verlet skin, the state carries x_ref and the halo cells
@@ -101,7 +105,7 @@ public:
         out.reserve(out.size() + bytes(f, plan_.send_count[k], plan_.send_walls[k]));
         const std::size_t row = row_bytes(f);
         for (CellIndex c : plan_.send_cells[k])
-            for (std::uint32_t i = ranges_.begin[c]; i < ranges_.end[c]; ++i)
+            for (std::uint32_t i = ranges_.begin(c), stop = ranges_.end(c); i < stop; ++i)
                 if (!f.only || P_.kind[i] == *f.only) {
                     const std::size_t n = out.size();
                     out.resize(n + row);
@@ -126,11 +130,8 @@ public:
                     col.take(col.array, i, from);
                     from += col.size;
                 }
-        if (f.state && assign_cells_) {
-            if (k >= ranges_.halo_cells.size())
-                throw std::logic_error("HaloFields::unpack: record_halo_cells was not called");
-            assign_halo_cells(first, last, ranges_.halo_cells[k]);
-        }
+        if (f.state && assign_cells_)
+            assign_halo_cells(first, last);
     }
 
 private:
@@ -149,7 +150,7 @@ private:
 
     // The halo cells' particle ranges, by the cells of the sort (the positions of the last
     // rebuild).
-    void assign_halo_cells(std::size_t first, std::size_t last, std::vector<CellIndex>& listed) {
+    void assign_halo_cells(std::size_t first, std::size_t last) {
         const std::vector<Vec<D>>& sorted_by = reference_ ? P_.x_ref : P_.x;
         // The peer sent whole cells in key order: each halo cell is one contiguous run.
         for (std::size_t i = first; i < last;) {
@@ -157,9 +158,7 @@ private:
             std::size_t j = i + 1;
             while (j < last && grid_.linear(grid_.coords(sorted_by[j])) == c)
                 ++j;
-            ranges_.begin[c] = static_cast<std::uint32_t>(i);
-            ranges_.end[c] = static_cast<std::uint32_t>(j);
-            listed.push_back(c);
+            ranges_.set(c, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
             i = j;
         }
     }

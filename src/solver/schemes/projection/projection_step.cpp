@@ -187,7 +187,7 @@ void ProjectionScheme<D>::projection_stage(const K& kernel, int stage, int group
         return pair_offset<D>(list, P_.x, i, p);
     };
     for (CellIndex c : cells)
-        for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+        for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
             const std::uint32_t k = i - list.first;
             const std::uint32_t b = list.offset[k], e = list.offset[k + 1];
             if (stage == 0 && P_.kind[i] == Kind::wall) {

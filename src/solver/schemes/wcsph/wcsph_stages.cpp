@@ -219,7 +219,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
                 apply_acoustic_damper(nb, kernel, damper_nu_, c, P_, std::span<Real>(P_.p),
                                       std::span<Real>(P_.p_over_rho2));
             if (momentum_lanes_) // wall particles in the walls stage, once their state is known
-                for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i)
                     if (P_.kind[i] == Kind::fluid)
                         write_momentum_neighbour(P_, case_.momentum.p_floor, i,
                                                  momentum_records_[i]);
@@ -238,7 +238,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
         }
         if (momentum_lanes_)
             for (CellIndex c : cells)
-                for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i)
                     if (P_.kind[i] == Kind::wall)
                         write_momentum_neighbour(P_, case_.momentum.p_floor, i,
                                                  momentum_records_[i]);
@@ -265,20 +265,20 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
     case StageKind::kick:
         // v_half is read by other groups only in their drift, which waits for this kick.
         for (CellIndex c : cells)
-            for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+            for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i)
                 if (P_.kind[i] == Kind::fluid)
                     P_.v_half[i] =
                         kick<D>(P_.v_half[i], P_.a[i], Real(clock_.dt_prev), Real(clock_.dt));
         if (!damping_.empty()) // the sponge layers: exact relaxation over the step
             for (CellIndex c : cells)
-                for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i)
                     if (P_.kind[i] == Kind::fluid)
                         for (const DampingZone<D>& z : damping_)
                             P_.v_half[i] *= z.factor(P_.x[i], Real(clock_.dt));
         if (!case_.motion.empty()) { // a moving wall's velocity at the middle of the step
             const auto& mid = case_.motion.frames().mid;
             for (CellIndex c : cells)
-                for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i)
+                for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i)
                     if (const int k = case_.motion.object_of(P_.id[i]); k >= 0)
                         P_.v_half[i] = from_pose_point<D>(mid[static_cast<std::size_t>(k)].velocity(
                             case_.motion.body_point(k, P_.id[i])));
@@ -308,7 +308,7 @@ void WcsphScheme<D>::run_stage_with(const K& kernel, int stage, int group) {
             else if (continuity_)
                 continuity_rate(nb, kernel, diffusion_, c, P_, std::span<const Vec<D>>(P_.v_half),
                                 std::span<Real>(P_.drho), moving_walls);
-            for (std::uint32_t i = nb.begin(c); i < nb.end(c); ++i) {
+            for (std::uint32_t i = nb.begin(c), stop = nb.end(c); i < stop; ++i) {
                 // v_half stays as kicked: other groups' continuity rates read it in this stage.
                 P_.v_half_next[i] = P_.v_half[i];
                 if (P_.kind[i] != Kind::fluid) {
@@ -372,7 +372,7 @@ void WcsphScheme<D>::sum_body_loads(const Neighbourhood<D>& nb, const K& kernel,
     sums.reset(motion.bodies().size());
     for (CellIndex c : cells) {
         const AdjacentCells<D> adj = nb.adjacent(c);
-        for (std::uint32_t j = nb.begin(c); j < nb.end(c); ++j) {
+        for (std::uint32_t j = nb.begin(c), stop = nb.end(c); j < stop; ++j) {
             if (P_.kind[j] != Kind::wall)
                 continue;
             const int b = motion.body_of(P_.id[j]);
