@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 namespace sluice::tasks {
@@ -24,7 +25,8 @@ void TraceRecorder::slice(const std::string& name, int tid, double begin, double
     if (!json_.empty())
         json_ += ",\n";
     // Timestamps in microseconds.
-    json_ += fmt::format(
+    fmt::format_to(
+        std::back_inserter(json_),
         R"({{"name":"{}","ph":"X","pid":{},"tid":{},"ts":{:.3f},"dur":{:.3f},"args":{{{}}}}})",
         name, rank_, tid, begin * 1e6, std::max(0.0, end - begin) * 1e6, args);
     ++events_;
@@ -41,34 +43,34 @@ void TraceRecorder::add_step(long step, const StepGraph& g,
     const std::size_t n = static_cast<std::size_t>(g.stage_count() * g.group_count());
     const std::size_t m = (records.size() - n) / 2;
     auto thread_of = [](const TaskRecord& r) { return r.thread < 0 ? kMpiTrack + 1 : r.thread; };
+    std::string waited; // one buffer for every task's list
     for (std::size_t slot = 0; slot < records.size(); ++slot) {
         const TaskRecord& r = records[slot];
         if (r.end <= 0)
             continue;
         // The tasks it waited for (graph edges), as ids of this run.
-        std::string waited;
+        waited.clear();
         for (int q : preds[slot]) {
             if (records[static_cast<std::size_t>(q)].end <= 0)
                 continue;
             if (!waited.empty())
                 waited += ',';
-            waited += fmt::format("{}", base + q);
+            fmt::format_to(std::back_inserter(waited), "{}", base + q);
         }
-        const std::string ids = fmt::format(R"("id":{},"preds":[{}])", base + slot, waited);
         if (r.stage >= 0) {
             const std::string& stage = r.stage < static_cast<int>(stages_.size())
                                            ? stages_[static_cast<std::size_t>(r.stage)]
                                            : std::string("stage");
             slice(stage, thread_of(r), r.start, r.end,
-                  fmt::format(R"("group":{},"step":{},"cpu_us":{:.3f},{})", r.group, step,
-                              r.cpu * 1e6, ids));
+                  fmt::format(R"("group":{},"step":{},"cpu_us":{:.3f},"id":{},"preds":[{}])",
+                              r.group, step, r.cpu * 1e6, base + static_cast<long>(slot), waited));
         } else {
             const std::string& ex = g.halo().exchanges[static_cast<std::size_t>(r.exchange)].name;
             slice(fmt::format("{} {}", r.stage == -1 ? "pack" : "unpack", ex), thread_of(r),
                   r.start, r.end,
-                  fmt::format(R"("peer":{},"step":{},"cpu_us":{:.3f},{})",
+                  fmt::format(R"("peer":{},"step":{},"cpu_us":{:.3f},"id":{},"preds":[{}])",
                               g.halo().peers[static_cast<std::size_t>(r.group)], step, r.cpu * 1e6,
-                              ids));
+                              base + static_cast<long>(slot), waited));
         }
     }
     auto message = [&](const MessageRecord& m_rec, std::string links) {
@@ -114,7 +116,8 @@ void TraceRecorder::flow_event(const std::string& name, bool start, long id, int
         json_ += ",\n";
     // "s" binds to the slice enclosing `at` on its thread (the pack), "f" with "bp":"e" to the
     // one enclosing it at the other end (the unpack).
-    json_ += fmt::format(
+    fmt::format_to(
+        std::back_inserter(json_),
         R"({{"name":"{}","cat":"halo","ph":"{}","id":{},"pid":{},"tid":{},"ts":{:.3f}{}}})", name,
         start ? "s" : "f", id, rank_, tid, at * 1e6, start ? "" : R"(,"bp":"e")");
     ++events_;
