@@ -22,7 +22,9 @@ finds the longest weighted chain: the tasks and messages that set the step's len
   with compute as the chain's task wall time and, beside it, the tasks' CPU time (which an
   oversubscribed machine does not inflate).
 
-Summaries over the steps: median and p90. The invariants the edges must satisfy (every
+Beside the chain, the other bound a step's graph has: the busiest rank's task wall time over
+its threads (the main thread's state packs count as a thread). Summaries over the steps:
+median and p90. The invariants the edges must satisfy (every
 dependency ended before its dependent started; a message completed after it was posted, was
 posted after its pack ended, and completed before its unpack started) are counted and printed.
 
@@ -190,7 +192,14 @@ def analyse(events, skip, networks):
         latency = sum(i["latency_s"] for i in items if i["kind"] == "message")
         rounds = sum(1 for i in items if i["kind"] == "message")
         nbytes = sum(i["bytes"] for i in items if i["kind"] == "message")
+        # The other bound on a step: the busiest rank's task time over its threads.
+        work, threads = defaultdict(float), defaultdict(set)
+        for e in tasks[s].values():
+            work[e["pid"]] += e["dur"] * 1e-6
+            threads[e["pid"]].add(e["tid"])
+        per_thread = max(w / len(threads[r]) for r, w in work.items())
         rows.append({"step": s, "step_s": length, "chain_s": compute + latency,
+                     "work_per_thread_s": per_thread,
                      "compute_s": compute, "cpu_s": cpu, "message_s": latency,
                      "rounds": rounds, "bytes": nbytes, "tasks": len(items) - rounds,
                      "floors": [{"latency": L, "bandwidth": B,
@@ -229,7 +238,7 @@ def main():
     if args.json:
         res["summary"] = {k: summary(rows, k) for k in
                           ("step_s", "chain_s", "compute_s", "cpu_s", "message_s", "rounds",
-                           "bytes")}
+                           "bytes", "work_per_thread_s")}
         json.dump(res, sys.stdout, indent=1)
         print()
         return
@@ -248,7 +257,8 @@ def main():
                               ("cpu_s", "  tasks on it, CPU [us]", us),
                               ("message_s", "  messages on it [us]", us),
                               ("rounds", "message rounds", 1), ("bytes", "bytes on it", 1),
-                              ("tasks", "tasks on it", 1)):
+                              ("tasks", "tasks on it", 1),
+                              ("work_per_thread_s", "busiest rank's work/thread", us)):
         s = summary(rows, key)
         print(f"{label:28s} {s['median'] * scale:12.1f} {s['p90'] * scale:12.1f}")
     ratio = summary([{"r": r["chain_s"] / r["step_s"]} for r in rows if r["step_s"] > 0], "r")
