@@ -200,11 +200,13 @@ RunResult run_impl(const CaseConfig& cfg, const RunOptions& opts, int threads) {
 
     Progress progress(cfg.end_time, opts.quiet || !root, opts.verbose);
     progress.log_to([&log](const std::string& line) { log.file_only(line); });
-    // One origin for the task clock of every rank, set together: each rank's origin was its
-    // own first use of the clock (tens of ms apart), so a trace could not lay the ranks' tasks
-    // side by side (perf/strong_scaling/between_steps.py compared durations only).
+    // One origin for the task clock of every rank: each rank's origin was its own first use of
+    // the clock (tens of ms apart), so a trace could not lay the ranks' tasks side by side
+    // (perf/strong_scaling/between_steps.py compared durations only). Rank 0's, broadcast
+    // after a barrier, so that on one node a message's post and completion compare exactly
+    // (perf/strong_scaling/critical_path.py).
     sim.comm().barrier();
-    tasks::reset_clock_origin();
+    tasks::share_clock_origin(sim.comm());
     t0 = Clock::now();
     RunRequests requests(opts.out_dir, cfg.checkpoint_every_minutes, root);
     while (sim.time() < cfg.end_time * (1 - 1e-12)) {

@@ -40,6 +40,10 @@ double post(const Bytes& buffer, int peer, int exchange, MPI_Request* request) {
 }
 } // namespace
 
+int StepGraph::exchange_tag(int exchange) {
+    return kTagBase + exchange;
+}
+
 double clock_seconds() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_origin()).count();
 }
@@ -51,6 +55,13 @@ double thread_cpu_seconds() {
 }
 void reset_clock_origin() {
     clock_origin() = std::chrono::steady_clock::now();
+}
+
+void share_clock_origin(const Comm& comm) {
+    reset_clock_origin();
+    const auto ticks = comm.broadcast(std::to_string(clock_origin().time_since_epoch().count()), 0);
+    clock_origin() = std::chrono::steady_clock::time_point(
+        std::chrono::steady_clock::duration(std::stoll(ticks)));
 }
 
 struct StepGraph::Impl {
@@ -166,6 +177,7 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
     send_buf_.assign(m, {});
     recv_buf_.assign(m, {});
     impl_->waits_for.assign(n + 2 * m, {});
+    predecessors_.assign(n + 2 * m, {});
 
     // Boundary work is the critical path between ranks: a peer waits for what these tasks
     // produce. Their tasks (and packing, unpacking) go before interior ones whenever both are
@@ -207,16 +219,21 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
             }
         auto slot_of = [&](int s, int grp) { return static_cast<std::size_t>(s * groups_ + grp); };
         auto node = [&](int s, int grp) -> Node& { return *impl_->nodes[slot_of(s, grp)]; };
-        // Every edge goes through here, so that ThreadSanitizer learns the same edges.
-        auto edge = [&](auto& from, const void* from_token, Node& to, std::size_t to_slot) {
+        // Every edge goes through here, so that ThreadSanitizer and the trace learn the same
+        // edges. from_slot: the predecessor's record slot, -1 for the start of the run.
+        auto edge = [&](auto& from, const void* from_token, int from_slot, Node& to,
+                        std::size_t to_slot) {
             tbb::flow::make_edge(from, to);
             impl_->waits_for[to_slot].push_back(from_token);
+            if (from_slot >= 0)
+                predecessors_[to_slot].push_back(from_slot);
         };
         const void* start_token = &run_start_token;
         for (int grp = 0; grp < groups_; ++grp)
-            edge(*impl_->start, start_token, node(0, grp), slot_of(0, grp));
+            edge(*impl_->start, start_token, -1, node(0, grp), slot_of(0, grp));
         auto after_node = [&](int s, int grp, Node& to, std::size_t to_slot) {
-            edge(node(s, grp), impl_->token(slot_of(s, grp)), to, to_slot);
+            edge(node(s, grp), impl_->token(slot_of(s, grp)), static_cast<int>(slot_of(s, grp)), to,
+                 to_slot);
         };
         for (int s = 1; s < stage_count(); ++s)
             for (int grp = 0; grp < groups_; ++grp) {
@@ -281,7 +298,7 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                 // release of &recv_buf_[k] just before it puts to the receive node.
                 impl_->waits_for[n + m + k].push_back(&recv_buf_[k]);
                 if (after < 0 || facing.empty()) {
-                    edge(*impl_->start, start_token, send, n + k);
+                    edge(*impl_->start, start_token, -1, send, n + k);
                 } else {
                     for (int grp : facing)
                         after_node(after, grp, send, n + k);
@@ -293,11 +310,11 @@ StepGraph::StepGraph(std::vector<StageSpec> stages, const std::vector<std::vecto
                 // overwrite their particles that the pack reads, for the pack too.
                 if (after + 1 < stage_count())
                     for (int grp : facing) {
-                        edge(recv, impl_->token(n + m + k), node(after + 1, grp),
-                             slot_of(after + 1, grp));
+                        edge(recv, impl_->token(n + m + k), static_cast<int>(n + m + k),
+                             node(after + 1, grp), slot_of(after + 1, grp));
                         if (after >= 0)
-                            edge(send, impl_->token(n + k), node(after + 1, grp),
-                                 slot_of(after + 1, grp));
+                            edge(send, impl_->token(n + k), static_cast<int>(n + k),
+                                 node(after + 1, grp), slot_of(after + 1, grp));
                     }
             }
     };
@@ -388,7 +405,7 @@ void StepGraph::run_with_messages(const GatePoll& gate) {
             rmsg[k] = messages_.size();
             messages_.push_back({halo_.exchanges[static_cast<std::size_t>(e)].name,
                                  halo_.peers[static_cast<std::size_t>(p)], false,
-                                 recv_buf_[k].size(), clock_seconds(), 0});
+                                 recv_buf_[k].size(), clock_seconds(), 0, static_cast<int>(k)});
         }
     std::size_t received = 0, sent = 0;
     // Posts the packed buffer of (exchange, peer) slot k, or takes over the request of the
@@ -406,7 +423,7 @@ void StepGraph::run_with_messages(const GatePoll& gate) {
         Comm::count_sent(send_buf_[k].size());
         smsg[k] = messages_.size();
         messages_.push_back({halo_.exchanges[static_cast<std::size_t>(e)].name, halo_.peers[p],
-                             true, send_buf_[k].size(), posted, 0});
+                             true, send_buf_[k].size(), posted, 0, static_cast<int>(k)});
         ++sent;
     };
     // The state at the start of the step is ready now: it leaves before any task runs, so

@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <random>
 
 using namespace sluice;
@@ -139,4 +140,38 @@ TEST_CASE("Rebin sorts by (Morton key, id) and cell ranges cover every particle 
     CHECK(covered == f.P.size());
     for (std::size_t k = 1; k < f.occupied.size(); ++k)
         CHECK(f.occupied[k - 1].key < f.occupied[k].key);
+}
+
+TEST_CASE("The graph's recorded predecessors are its edges, each ended before its dependent") {
+    // Groups in a row, 0 - 1 - 2 - 3; stages: first, a neighbourhood stage, a self stage.
+    const std::vector<std::vector<int>> adjacent{{1}, {0, 2}, {1, 3}, {2}};
+    tasks::StepGraph graph({{"first", tasks::Reach::neighbourhood},
+                            {"neighbourhood", tasks::Reach::neighbourhood},
+                            {"self", tasks::Reach::self}},
+                           adjacent, [](int, int) {
+                               // Long enough for the clock to tell a task's start from its end.
+                               const double t0 = tasks::clock_seconds();
+                               while (tasks::clock_seconds() - t0 < 20e-6) {
+                               }
+                           });
+    graph.run();
+    const auto& preds = graph.task_predecessors();
+    const auto& rec = graph.task_records();
+    REQUIRE(preds.size() == rec.size());
+    REQUIRE(rec.size() == 12);
+    auto sorted = [](std::vector<int> v) {
+        std::sort(v.begin(), v.end());
+        return v;
+    };
+    for (int g = 0; g < 4; ++g) {
+        CHECK(preds[static_cast<std::size_t>(g)].empty()); // the first stage waits for the start
+        std::vector<int> around{g};
+        for (int nb : adjacent[static_cast<std::size_t>(g)])
+            around.push_back(nb);
+        CHECK(sorted(preds[static_cast<std::size_t>(4 + g)]) == sorted(around));
+        CHECK(preds[static_cast<std::size_t>(8 + g)] == std::vector<int>{4 + g});
+    }
+    for (std::size_t slot = 0; slot < rec.size(); ++slot)
+        for (int q : preds[slot])
+            CHECK(rec[static_cast<std::size_t>(q)].end <= rec[slot].start);
 }

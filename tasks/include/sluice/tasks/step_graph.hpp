@@ -71,6 +71,11 @@ struct HaloWiring {
 // Seconds on a clock shared by every rank of a node (steady clock, origin set once).
 double clock_seconds();
 void reset_clock_origin();
+// Every rank takes rank 0's origin (collective): on one node, where the steady clock is the
+// same for every process, the ranks' times are then directly comparable, so a message's
+// completion on its receiver is never before its post on the sender. Across nodes each
+// node's steady clock has its own origin and the times stay comparable only to the skew.
+void share_clock_origin(const Comm& comm);
 // CPU seconds the calling thread has used (CLOCK_THREAD_CPUTIME_ID): a task's work, which its
 // wall interval overstates when more ranks and threads run than there are cores.
 double thread_cpu_seconds();
@@ -90,6 +95,10 @@ struct MessageRecord {
     bool send = false;
     std::size_t bytes = 0;
     double post = 0, done = 0;
+    // A halo message of a step graph: its (exchange, peer index) slot k = exchange * peers +
+    // peer index, so its pack task is record n + k and its unpack n + m + k (task_records).
+    // -1 for messages outside the graphs.
+    int slot = -1;
 };
 
 class StepGraph {
@@ -138,6 +147,14 @@ public:
     // Every task (compute, pack, unpack) and message of the last run, and its time span.
     [[nodiscard]] const std::vector<TaskRecord>& task_records() const { return records_; }
     [[nodiscard]] const std::vector<MessageRecord>& message_records() const { return messages_; }
+    // The graph's edges, by record slot (as task_records): the slots each task waits for
+    // (the start of the run and a receive's arrival are not tasks and are not listed). Built
+    // with the graph, so reading them costs a step nothing.
+    [[nodiscard]] const std::vector<std::vector<int>>& task_predecessors() const {
+        return predecessors_;
+    }
+    // MPI tag of exchange e's halo messages.
+    [[nodiscard]] static int exchange_tag(int exchange);
     [[nodiscard]] double run_begin() const { return run_begin_; }
     [[nodiscard]] double run_end() const { return run_end_; }
 
@@ -161,6 +178,7 @@ private:
     Body body_;
     HaloWiring halo_;
     std::vector<TaskRecord> records_; // compute nodes, then per (exchange, peer) pack, unpack
+    std::vector<std::vector<int>> predecessors_; // by slot, as records_
     std::vector<MessageRecord> messages_;
     std::vector<Bytes> send_buf_, recv_buf_; // per (exchange, peer)
     double run_begin_ = 0, run_end_ = 0;

@@ -3,6 +3,13 @@
 // its rank's worker-thread track, every message as a slice on the rank's "MPI" track (the
 // main thread, which drives all communication). Each rank records its own events; the root
 // gathers them into one file.
+//
+// Edges (perf/strong_scaling/critical_path.py reads them): a task's args hold its `id`
+// (unique within its rank) and `preds`, the ids of the tasks it waited for (the graph's
+// edges). A halo message's args hold `src`, `dst`, `tag`, `kind` (the exchange) and
+// `producer` (sender: its pack task) or `consumer` (receiver: its unpack task), and `flow`,
+// the same on both ranks; a flow event pair (ph "s" at the pack, "f" at the unpack) draws
+// the arrow. Every reader of complete slices (ph "X") is unaffected by the flow events.
 #include "sluice/tasks/comm.hpp"
 #include "sluice/tasks/step_graph.hpp"
 
@@ -30,7 +37,9 @@ public:
 
 private:
     void slice(const std::string& name, int tid, double begin, double end, const std::string& args);
+    void flow_event(const std::string& name, bool start, long id, int tid, double at);
     int rank_;
+    long next_id_ = 0; // the next run's first task id
     std::vector<std::string> stages_;
     std::size_t max_events_, events_ = 0;
     bool truncated_ = false;
