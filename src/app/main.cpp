@@ -55,11 +55,13 @@ using sluice::human_bytes;
 // The memory estimate per rank by term (sluice/io/memory_estimate.hpp).
 void print_memory(const sluice::MemoryEstimate& m, const sluice::MemoryLimit& limit) {
     fmt::print("memory      ~{} per rank on {} rank{}{}; limit {} ({})\n", human_bytes(m.total()),
-               m.ranks, m.ranks == 1 ? "" : "s", m.ranks == 1 ? "" : " (rank 0, the busiest)",
+               m.ranks, m.ranks == 1 ? "" : "s", m.ranks == 1 ? "" : " (the busiest rank)",
                human_bytes(limit.bytes), limit.source);
     fmt::print("  process   {} (libraries, MPI, TBB and HDF5 runtimes)\n", human_bytes(m.baseline));
-    fmt::print("  particles {} ({:.0f} per rank: state, neighbour lists, sort buffers)\n",
-               human_bytes(m.particles), m.particles_per_rank);
+    fmt::print(
+        "  particles {} ({:.0f} per rank, {:.0f} of them fluid: state, neighbour lists, sort "
+        "buffers)\n",
+        human_bytes(m.particles), m.particles_per_rank, m.fluid_per_rank);
     if (m.ranks > 1) {
         fmt::print("  halo      {} ({:.0f} copies of other ranks' particles)\n",
                    human_bytes(m.halo), m.halo_particles);

@@ -99,8 +99,11 @@ MemoryEstimate estimate_memory(const MemoryInputs& in) {
     const double wall =
         in.state_bytes + kOtherBytesPerParticle + (kBytesPerWallPair + shift) * pairs;
     e.baseline = kBaselineBytes;
-    // The rank's even share of each kind.
-    e.particles = (fluid * in.fluid + wall * in.walls) / e.ranks;
+    // The ranks hold equal counts (the decomposition cuts the particles' curve into equal
+    // shares), and a fluid particle costs some ten times a wall particle: the busiest rank is
+    // one whose share is fluid first (a dam break's column lies in the first ranks' part).
+    e.fluid_per_rank = std::min(e.particles_per_rank, in.fluid);
+    e.particles = fluid * e.fluid_per_rank + wall * (e.particles_per_rank - e.fluid_per_rank);
     e.halo = in.state_bytes * e.halo_particles;
     e.grid = grid_bytes_per_rank(in.cells, e.ranks);
     e.totals = e.ranks > 1 ? kTotalsBytesPerFluid * in.fluid : 0;

@@ -33,33 +33,48 @@ TEST_CASE("halo layer: the lattice sites one support around a compact region") {
     CHECK(halo_particles_per_rank(2, 1e4, 1e4, 2.6, 1) == 0);
 }
 
-TEST_CASE("memory estimate: the terms add up and scale as defined") {
+TEST_CASE("memory estimate: the terms add up, the busiest rank's share is fluid first") {
     MemoryInputs in;
     in.dimension = 3;
-    in.fluid = 8e6;
-    in.walls = 2e6;
     in.cells = 1e6;
     in.support_over_dx = 3;
     in.state_bytes = 400;
     in.ranks = 1;
+    // The cost of one fluid and of one wall particle, from cases of only one kind.
+    in.fluid = 1e6;
+    const double fluid = estimate_memory(in).particles / 1e6;
+    in.fluid = 0;
+    in.walls = 1e6;
+    const double wall = estimate_memory(in).particles / 1e6;
+    CHECK(fluid > 4 * wall); // lists of every neighbour against lists of fluid neighbours
+    CHECK(wall > in.state_bytes);
+
+    in.fluid = 8e6;
+    in.walls = 2e6;
     const MemoryEstimate one = estimate_memory(in);
     CHECK(one.particles_per_rank == 1e7);
+    CHECK(one.particles == doctest::Approx(8e6 * fluid + 2e6 * wall));
     CHECK(one.halo == 0);
     CHECK(one.totals == 0);
     CHECK(one.grid == grid_bytes_per_rank(1e6, 1));
     CHECK(one.total() == one.baseline + one.particles + one.grid);
+    // 10 ranks of 1e6 particles: the busiest holds fluid only; the grid of the whole domain
+    // on every rank (today); the halo copies' state; the fluid's ids and masses on rank 0.
     in.ranks = 10;
     const MemoryEstimate ten = estimate_memory(in);
-    // A tenth of the particles each, the grid of the whole domain on every rank (today), the
-    // halo copies' state, the fluid's ids and masses on rank 0.
-    CHECK(ten.particles == doctest::Approx(one.particles / 10));
+    CHECK(ten.fluid_per_rank == 1e6);
+    CHECK(ten.particles == doctest::Approx(1e6 * fluid));
     CHECK(ten.grid == one.grid);
     CHECK(ten.baseline == one.baseline);
     CHECK(ten.halo == doctest::Approx(400 * halo_particles_per_rank(3, 1e6, 1e7, 3, 10)));
     CHECK(ten.totals > 0);
     in.fluid *= 2;
     CHECK(estimate_memory(in).totals == doctest::Approx(2 * ten.totals));
-    CHECK(ten.total() < one.total());
+    // 4 ranks of 2.5e6: 2e6 fluid are not a share, so the busiest holds them and 5e5 walls.
+    in.fluid = 2e6;
+    in.walls = 8e6;
+    in.ranks = 4;
+    CHECK(estimate_memory(in).particles == doctest::Approx(2e6 * fluid + 5e5 * wall));
 }
 
 TEST_CASE("a case over the limit is refused naming the file and particles.dx") {

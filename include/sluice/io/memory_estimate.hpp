@@ -22,10 +22,12 @@ struct MemoryInputs {
     int ranks = 1;               // MPI ranks the case runs on
 };
 
-// The estimate for the rank that needs the most (rank 0), by term, in bytes.
+// The estimate for the rank that needs the most, by term, in bytes: an equal share of the
+// particles, fluid first, with rank 0's run totals.
 struct MemoryEstimate {
     int ranks = 1;
     double particles_per_rank = 0; // owned particles (fluid and walls), an even share
+    double fluid_per_rank = 0;     // of which fluid: as many as the share holds
     double halo_particles = 0;     // copies of other ranks' particles within one support
     double baseline = 0;           // the process: libraries, MPI, TBB and HDF5 runtimes
     double particles = 0;          // owned particles: state, neighbour lists, sort buffers
