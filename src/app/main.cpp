@@ -5,7 +5,9 @@
 #include "sluice/core/types.hpp"
 #include "sluice/io/case_reader.hpp"
 #include "sluice/io/errors.hpp"
+#include "sluice/io/memory_estimate.hpp"
 #include "sluice/solver/case_check.hpp"
+#include "sluice/solver/case_memory.hpp"
 #include "sluice/solver/run.hpp"
 #include "sluice/tasks/comm.hpp"
 #include "sluice/version.hpp"
@@ -48,24 +50,36 @@ std::string version_string() {
                        sluice::single_precision ? ", single precision" : "");
 }
 
-std::string human_bytes(double bytes) {
-    const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB"};
-    int u = 0;
-    while (bytes >= 1024 && u < 4) {
-        bytes /= 1024;
-        ++u;
+using sluice::human_bytes;
+
+// The memory estimate per rank by term (sluice/io/memory_estimate.hpp).
+void print_memory(const sluice::MemoryEstimate& m, const sluice::MemoryLimit& limit) {
+    fmt::print("memory      ~{} per rank on {} rank{}{}; limit {} ({})\n", human_bytes(m.total()),
+               m.ranks, m.ranks == 1 ? "" : "s", m.ranks == 1 ? "" : " (the busiest rank)",
+               human_bytes(limit.bytes), limit.source);
+    fmt::print("  process   {} (libraries, MPI, TBB and HDF5 runtimes)\n", human_bytes(m.baseline));
+    fmt::print(
+        "  particles {} ({:.0f} per rank, {:.0f} of them fluid: state, neighbour lists, sort "
+        "buffers)\n",
+        human_bytes(m.particles), m.particles_per_rank, m.fluid_per_rank);
+    if (m.ranks > 1) {
+        fmt::print("  halo      {} ({:.0f} copies of other ranks' particles)\n",
+                   human_bytes(m.halo), m.halo_particles);
+        fmt::print("  totals    {} (rank 0 only: every fluid particle's id and mass)\n",
+                   human_bytes(m.totals));
     }
-    return fmt::format("{:.1f} {}", bytes, units[u]);
+    fmt::print("  grid      {} (the whole domain's cells on every rank)\n", human_bytes(m.grid));
 }
 
-void print_info(const sluice::CaseConfig& cfg, const sluice::CaseInfo& info) {
+void print_info(const sluice::CaseConfig& cfg, const sluice::CaseInfo& info,
+                const sluice::MemoryLimit& limit) {
     fmt::print("case        {}  ({})\n", cfg.name, cfg.source_file);
     if (!cfg.description.empty())
         fmt::print("            {}\n", cfg.description);
     fmt::print("dimension   {}-D\n", cfg.dimension);
     fmt::print("particles   {} fluid + {} wall = {}\n", info.fluid_particles, info.wall_particles,
                info.fluid_particles + info.wall_particles);
-    fmt::print("memory      ~{} (particle state)\n", human_bytes(info.memory_bytes));
+    print_memory(info.memory, limit);
     fmt::print("h           {:.6g} m  (dx = {:.6g} m, h/dx = {:.6g})\n", info.h, cfg.dx,
                cfg.h_over_dx);
     fmt::print("support     {:.6g} m (kernel: see physics)\n", info.support);
@@ -185,7 +199,31 @@ struct RunFlags {
     bool quiet = false, verbose = false;
     int debug_fail_rank = -1;
     long debug_fail_step = -1;
+    int ranks = 1;          // info/check: the ranks the memory estimate is for
+    std::string max_memory; // --max-memory SIZE per rank (empty: this machine's memory)
 };
+
+// Ranks of this run on this machine, which share its memory (Open MPI, MPICH); 1 outside MPI.
+int ranks_on_this_machine(const sluice::tasks::Comm& world) {
+    for (const char* v : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
+        if (const char* n = std::getenv(v); n != nullptr && std::atoi(n) > 0)
+            return std::atoi(n);
+    return world.parallel() ? world.size() : 1;
+}
+
+// The memory one rank may use: --max-memory, else this machine's share; rank 0's verdict for
+// every rank (collective), so that machines of different sizes cannot split the ranks.
+sluice::MemoryLimit rank_memory_limit(const sluice::tasks::Comm& world, const RunFlags& flags,
+                                      int ranks_here) {
+    const auto max_memory =
+        flags.max_memory.empty() ? std::nullopt : sluice::parse_memory_size(flags.max_memory);
+    sluice::MemoryLimit limit = sluice::memory_limit(max_memory, ranks_here);
+    if (world.parallel()) {
+        limit.bytes = std::stod(world.broadcast(fmt::format("{}", limit.bytes), 0));
+        limit.source = world.broadcast(limit.source, 0);
+    }
+    return limit;
+}
 
 // Reads the case and runs, describes or checks it; returns the process exit code.
 int execute(Command command, const std::string& case_path, const std::vector<std::string>& sets,
@@ -195,7 +233,15 @@ int execute(Command command, const std::string& case_path, const std::vector<std
     try {
         // Everything is validated here, before the solver creates the results folder.
         const sluice::CaseConfig cfg = sluice::read_case(case_path, sets);
-        const sluice::CaseInfo info = sluice::describe_case(cfg);
+        // The memory per rank: a run's own communicator, else --ranks. Checked once before the
+        // particles are counted (a shaped block's count visits its lattice box), then exactly.
+        const bool running = command == Command::run;
+        const int ranks = running ? world.size() : flags.ranks;
+        const sluice::MemoryLimit limit =
+            rank_memory_limit(world, flags, running ? ranks_on_this_machine(world) : 1);
+        sluice::check_memory(cfg, sluice::case_memory_before_counting(cfg, ranks), limit);
+        const sluice::CaseInfo info = sluice::describe_case(cfg, ranks);
+        sluice::check_memory(cfg, info.memory, limit);
         sluice::check_runnable(cfg, info);
         const auto warnings = sluice::case_warnings(cfg, info);
         if (command == Command::run) {
@@ -231,7 +277,7 @@ int execute(Command command, const std::string& case_path, const std::vector<std
                            result.steps, result.simulated_time, result.wall_seconds, opts.out_dir);
         } else if (root) {
             if (command == Command::info)
-                print_info(cfg, info);
+                print_info(cfg, info, limit);
             else
                 fmt::print("{}: ok ({} particles, dt {:.4g} s)\n", case_path,
                            info.fluid_particles + info.wall_particles, info.dt_estimate);
@@ -313,6 +359,21 @@ int main(int argc, char** argv) {
     CLI::App* check = app.add_subcommand(
         "check", "Validate a case without running it (exit code 0: it would run, 2: refused)");
     add_case_options(check, case_path, sets);
+    for (CLI::App* cmd : {info, check})
+        cmd->add_option("--ranks", flags.ranks,
+                        "MPI ranks the memory estimate per rank is for (default 1)")
+            ->check(CLI::Range(1, 1 << 24));
+    for (CLI::App* cmd : {run, info, check})
+        cmd->add_option("--max-memory", flags.max_memory,
+                        "Memory one rank may use, e.g. 4GiB, 512MiB, 2e9 (default: this "
+                        "machine's MemTotal shared by the run's ranks on it); a case whose "
+                        "estimate per rank is larger is refused")
+            ->type_name("SIZE")
+            ->check([](const std::string& v) {
+                return sluice::parse_memory_size(v)
+                           ? std::string()
+                           : std::string("not a size (e.g. 4GiB, 512MiB, 2e9 bytes)");
+            });
     CLI::App* schema = app.add_subcommand(
         "schema", "Print every key a case file may hold (table, key, type, unit, default, range, "
                   "the scheme it applies to, doc) as JSON");

@@ -17,10 +17,11 @@
 namespace sluice::case_file {
 namespace {
 
-// Bounds of the case's size (the bounds of single keys are the schema's ranges): far beyond
-// any real case; past them a case is a typo or hostile input. Micro-cells of the grid: 32-bit
-// cell indices, and 21 bits per axis of a 3-D Morton key.
-constexpr double kMaxCells = 2e8;
+// Bounds of the case's size that come from types (the bounds of single keys are the schema's
+// ranges; whether a case fits in memory is the memory estimate's, checked by the commands for
+// their rank count): micro-cells of the grid are indexed by 32-bit cell indices (CellIndex),
+// and a 3-D Morton key has 21 bits per axis.
+constexpr double kMaxCells = 4294967295.0; // 2^32 - 1
 constexpr double kMaxCellsPerAxis3d = 2097151;
 
 // Lattice sites along an extent (the solver rounds the same way), in floating point so that a
@@ -31,7 +32,7 @@ double sites(double extent, double dx) {
 
 } // namespace
 
-// Refuses cases that would not fit any sensible machine, before anything is allocated: the
+// Refuses hostile sizes and sizes past the types, before anything is counted or allocated: the
 // fluid lattice, the dummy-wall lattice around the tank, and the micro-cell grid.
 void check_case_size(const Section& root, const CaseConfig& c) {
     const auto dim = static_cast<std::size_t>(c.dimension);
@@ -43,12 +44,12 @@ void check_case_size(const Section& root, const CaseConfig& c) {
             n *= sites(b.hi[a] - b.lo[a], c.dx);
         fluid += n;
     }
-    if (fluid > max_case_particles)
+    if (fluid > hostile_case_particles)
         root.reader().fail("particles.dx",
                            fmt::format("the fluid blocks would hold about {:.3g} particles "
-                                       "(volume / dx^{}), above the limit of {:.0f} million; "
+                                       "(volume / dx^{}), beyond any machine (more than {:.0e}); "
                                        "increase dx",
-                                       fluid, c.dimension, max_case_particles / 1e6),
+                                       fluid, c.dimension, hostile_case_particles),
                            dx_node);
 
     const double support = kernel_support_factor(c.kernel) * c.h_over_dx * c.dx;
@@ -58,13 +59,13 @@ void check_case_size(const Section& root, const CaseConfig& c) {
         double walls = 1;
         for (std::size_t a = 0; a < dim; ++a)
             walls *= sites(c.tank_hi[a] - c.tank_lo[a], c.dx) + 2 * layers;
-        if (walls > max_case_particles)
+        if (walls > hostile_case_particles)
             root.reader().fail(
                 "particles.dx",
                 fmt::format("the dummy walls around the tank would need up to {:.3g} particles "
-                            "((tank / dx + wall layers)^{}), above the limit of {:.0f} million; "
-                            "increase dx or make the tank smaller",
-                            walls, c.dimension, max_case_particles / 1e6),
+                            "((tank / dx + wall layers)^{}), beyond any machine (more than "
+                            "{:.0e}); increase dx or make the tank smaller",
+                            walls, c.dimension, hostile_case_particles),
                 dx_node);
     }
 
@@ -91,9 +92,9 @@ void check_case_size(const Section& root, const CaseConfig& c) {
     if (cells > kMaxCells)
         root.reader().fail("particles.dx",
                            fmt::format("the domain would need {:.3g} micro-cells (one kernel "
-                                       "support wide), above the limit of {:.0f} million; "
-                                       "increase dx or make the domain smaller",
-                                       cells, kMaxCells / 1e6),
+                                       "support wide), more than the {:.0f} of 32-bit cell "
+                                       "indices; increase dx or make the domain smaller",
+                                       cells, kMaxCells),
                            dx_node);
 }
 

@@ -7,7 +7,8 @@
 
 namespace sluice::case_file {
 
-// Refuses (naming particles.dx) a case whose particles or grid cells exceed the limits.
+// Refuses (naming particles.dx) a case of hostile size or with more grid cells than the cell
+// indices hold; whether it fits in memory is memory_estimate.hpp's, for a rank count.
 // Needs every table but the run controls read.
 void check_case_size(const Section& root, const CaseConfig& c);
 

@@ -187,11 +187,11 @@ void read_walls(const Section& s, CaseConfig& c) {
             deep *= std::max(0.0, n - 2 * layers);
         }
         box_particles += all - deep;
-        b.require(box_particles <= max_case_particles, "hi",
+        b.require(box_particles <= hostile_case_particles, "hi",
                   fmt::format("the wall boxes would hold about {:.3g} particles (their surface "
-                              "{:g} lattice sites deep), above the limit of {:.0f} million; "
+                              "{:g} lattice sites deep), beyond any machine (more than {:.0e}); "
                               "increase dx or make the boxes smaller",
-                              box_particles, layers, max_case_particles / 1e6));
+                              box_particles, layers, hostile_case_particles));
         c.boxes.push_back(box);
     }
     read_wall_meshes(s, c);

@@ -3,11 +3,10 @@
 // checks and the case-reader fuzzer need none of the solver.
 #include "sluice/solver/run.hpp"
 
-#include "sluice/core/particles.hpp"
-#include "sluice/io/wall_extent.hpp"
 #include "sluice/physics/kernels.hpp"
 #include "sluice/physics/timestep.hpp"
 #include "sluice/solver/built_geometry.hpp"
+#include "sluice/solver/case_memory.hpp"
 #include "sluice/solver/initial_state.hpp"
 #include "sluice/solver/motion_check.hpp"
 
@@ -32,11 +31,6 @@ const char* kernel_name(KernelType k) {
         return "cubic spline (support 2h)";
     }
     return "?";
-}
-
-// Bytes of particle state per particle: one element of every array of Particles<D>.
-std::size_t bytes_per_particle(int dim) {
-    return dim == 2 ? Particles<2>::bytes_per_particle() : Particles<3>::bytes_per_particle();
 }
 
 // "[a, b]" or "[a, b, c]" with 6 significant digits.
@@ -128,15 +122,15 @@ std::vector<std::string> geometry_lines(const CaseConfig& cfg, int layers) {
 
 } // namespace
 
-CaseInfo describe_case(const CaseConfig& cfg) {
+CaseInfo describe_case(const CaseConfig& cfg, int ranks) {
     CaseInfo info;
     info.h = cfg.h_over_dx * cfg.dx;
     info.support = kernel_support_factor(cfg.kernel) * info.h;
     const int layers = wall_layers(info.support, cfg.dx);
     info.fluid_particles = count_fluid_particles(cfg);
     info.wall_particles = count_wall_particles(cfg, layers);
-    info.memory_bytes = static_cast<double>((info.fluid_particles + info.wall_particles) *
-                                            bytes_per_particle(cfg.dimension));
+    info.memory = case_memory(cfg, static_cast<double>(info.fluid_particles),
+                              static_cast<double>(info.wall_particles), ranks);
     double g = 0, vmax = 0;
     for (int d = 0; d < cfg.dimension; ++d)
         g += cfg.gravity[d] * cfg.gravity[d];
@@ -151,13 +145,7 @@ CaseInfo describe_case(const CaseConfig& cfg) {
     info.dt_force = l.force;
     info.dt_stable = l.min();
     info.dt_estimate = cfg.fixed_dt ? *cfg.fixed_dt : l.min();
-    info.cells = 1;
-    for (int d = 0; d < cfg.dimension; ++d) {
-        const AxisExtent e = wall_extent(cfg, static_cast<std::size_t>(d));
-        const double extent =
-            cfg.periodic[d] ? cfg.domain_hi[d] - cfg.domain_lo[d] : e.hi - e.lo + 2 * info.support;
-        info.cells *= static_cast<std::size_t>(std::max(1.0, std::floor(extent / info.support)));
-    }
+    info.cells = static_cast<std::size_t>(case_grid_cells(cfg));
 
     auto& ph = info.physics;
     ph.push_back(fmt::format("kernel: {}, h = {:.4g} m ({} dx)", kernel_name(cfg.kernel), info.h,

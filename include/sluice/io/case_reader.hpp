@@ -30,7 +30,11 @@ CaseConfig read_case_text(std::string_view text, const std::string& name,
 // refused under the other), when (a further condition, "KEY = VALUE"), doc} (`sluice schema`).
 std::string case_schema_json();
 
-// Upper bound on the fluid particle count a case may ask for (estimated from the blocks).
-inline constexpr double max_case_particles = 50e6;
+// Particles (fluid, or dummy walls) past which a case is refused as hostile input before
+// anything is counted or allocated: at the few hundred bytes each a particle needs at least
+// (perf/memory/README.md, "Memory estimate") that is hundreds of TiB, beyond any machine at any
+// rank count. Whether a case fits is decided from the memory estimate per rank
+// (sluice/io/memory_estimate.hpp), not from this bound.
+inline constexpr double hostile_case_particles = 1e12;
 
 } // namespace sluice

@@ -1,6 +1,7 @@
 #pragma once
 // Entry points the command line calls: describe a case, run it.
 #include "sluice/io/case_config.hpp"
+#include "sluice/io/memory_estimate.hpp"
 #include "sluice/io/run_result.hpp"
 
 #include <cstdint>
@@ -26,18 +27,19 @@ struct RunOptions {
 struct CaseInfo {
     std::size_t fluid_particles = 0;
     std::size_t wall_particles = 0;
-    double memory_bytes = 0; // estimate of the particle state
-    double h = 0;            // smoothing length [m]
-    double support = 0;      // kernel support radius [m]
-    double dt_estimate = 0;  // time step the run starts with [s] (fixed, or dt_stable)
-    double dt_stable = 0;    // stable time step at rest [s]
+    MemoryEstimate memory;  // per rank, for the rank count describe_case was given
+    double h = 0;           // smoothing length [m]
+    double support = 0;     // kernel support radius [m]
+    double dt_estimate = 0; // time step the run starts with [s] (fixed, or dt_stable)
+    double dt_stable = 0;   // stable time step at rest [s]
     double dt_acoustic = 0, dt_viscous = 0, dt_force = 0;
     std::size_t cells = 0;             // micro-cells of the grid
     std::vector<std::string> physics;  // human-readable list of what is switched on
     std::vector<std::string> geometry; // the walls, obstacles and blocks as built
 };
 
-CaseInfo describe_case(const CaseConfig& cfg);
+// `ranks`: the MPI ranks the memory estimate is for.
+CaseInfo describe_case(const CaseConfig& cfg, int ranks = 1);
 
 // Runs the case to its end time, or from a checkpoint on (opts.restart_dir); on several MPI
 // ranks every rank calls it (collective) and rank 0 writes all output. Writes checkpoints as

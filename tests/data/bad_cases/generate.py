@@ -268,6 +268,13 @@ def structured(base, doc):
     add("count_fluid_huge", lambda d: (set_at("domain.hi", big)(d), set_at("blocks[0].hi", big)(d),
                                        d.pop("walls", None), d.pop("probes", None), d)[-1],
         "particles.dx")
+    # Below the hostile bound but beyond any machine's memory on one rank: 1e10 particles (the
+    # memory estimate per rank, sluice/io/memory_estimate.hpp).
+    side = doc["particles"]["dx"] * 1e10 ** (1 / dim)
+    add("count_memory_huge", lambda d: (set_at("domain.hi", [side] * dim)(d),
+                                        set_at("blocks[0].hi", [side] * dim)(d),
+                                        d.pop("walls", None), d.pop("probes", None), d)[-1],
+        "particles.dx")
     add("count_cells_huge", lambda d: (set_at("domain.hi", [1e6] * dim)(d), d.pop("walls", None),
                                        d.pop("probes", None), d)[-1], "particles.dx")
     if not any(doc["domain"].get("periodic", [False])):
