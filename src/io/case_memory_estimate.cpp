@@ -41,11 +41,11 @@ constexpr double kBytesPerFluidPair = 36.3;
 constexpr double kBytesPerWallPair = 4.0;
 // A periodic case's lists also hold each pair's image shift (8 per axis; counted, not fitted).
 constexpr double kShiftBytesPerAxis = 8;
-// Per cell of the grid: CellRanges' begin and end (4 + 4), the Rebinner's Morton order (4),
-// Morton keys (8) and counting-sort offsets (4) and the census's own ranges (4 + 4) count 32 B;
-// measured 20.5 B (the slope of the sparse tank's peak from 2.40e6 to 9.54e6 cells; zeroed
-// arrays the kernel maps on demand stay partly untouched), so 21.
-constexpr double kGridBytesPerCell = 21;
+// Per stored cell of a rank's grid: the hash table of cell ranges (CellRanges::bytes_for: 16 B
+// slots, at most half full, and a table kept up to twice larger between rebins: 64 B) and the
+// Rebinner's per-occupied-cell key and offset (12 B). A rank stores its occupied cells and one
+// slot per halo particle (docs/ARCHITECTURE.md, "Cell storage"); empty space costs nothing.
+constexpr double kGridBytesPerStoredCell = 76;
 // Rank 0 of a parallel run: every fluid particle's id and mass gathered (16 B) and unpacked into
 // a vector, for the fluid mass summed in id order (run_totals.cpp); measured 28 B per fluid
 // particle: rank 0's peak after start-up was 27 MiB above rank 1's for 999,698 fluid particles on
@@ -71,8 +71,11 @@ double mem_total_bytes() {
 
 } // namespace
 
-double grid_bytes_per_rank(double cells, int /*ranks*/) {
-    return kGridBytesPerCell * cells;
+double grid_bytes_per_rank(int dimension, double owned, double halo, double support_over_dx,
+                           double domain_cells) {
+    // A full cell is one support wide: (support / dx)^D lattice sites.
+    const double per_cell = std::max(1.0, std::pow(support_over_dx, dimension));
+    return kGridBytesPerStoredCell * std::min(domain_cells, owned / per_cell + halo);
 }
 
 double halo_particles_per_rank(int dimension, double particles_per_rank, double total_particles,
@@ -105,7 +108,8 @@ MemoryEstimate estimate_memory(const MemoryInputs& in) {
     e.fluid_per_rank = std::min(e.particles_per_rank, in.fluid);
     e.particles = fluid * e.fluid_per_rank + wall * (e.particles_per_rank - e.fluid_per_rank);
     e.halo = in.state_bytes * e.halo_particles;
-    e.grid = grid_bytes_per_rank(in.cells, e.ranks);
+    e.grid = grid_bytes_per_rank(in.dimension, e.particles_per_rank, e.halo_particles,
+                                 in.support_over_dx, in.cells);
     e.totals = e.ranks > 1 ? kTotalsBytesPerFluid * in.fluid : 0;
     return e;
 }

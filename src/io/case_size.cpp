@@ -19,8 +19,9 @@ namespace {
 
 // Bounds of the case's size that come from types (the bounds of single keys are the schema's
 // ranges; whether a case fits in memory is the memory estimate's, checked by the commands for
-// their rank count): micro-cells of the grid are indexed by 32-bit cell indices (CellIndex),
-// and a 3-D Morton key has 21 bits per axis.
+// their rank count): a 3-D Morton key has 21 bits per axis, and the balancer's peer search
+// walks a rank's range of cell keys cell by cell (tasks::peers_of), which bounds the grid's
+// cells (CellIndex itself is 64-bit; the cell ranges store occupied cells only).
 constexpr double kMaxCells = 4294967295.0; // 2^32 - 1
 constexpr double kMaxCellsPerAxis3d = 2097151;
 
@@ -92,8 +93,8 @@ void check_case_size(const Section& root, const CaseConfig& c) {
     if (cells > kMaxCells)
         root.reader().fail("particles.dx",
                            fmt::format("the domain would need {:.3g} micro-cells (one kernel "
-                                       "support wide), more than the {:.0f} of 32-bit cell "
-                                       "indices; increase dx or make the domain smaller",
+                                       "support wide), more than the {:.0f} the balancer's "
+                                       "peer search walks; increase dx or make the domain smaller",
                                        cells, kMaxCells),
                            dx_node);
 }

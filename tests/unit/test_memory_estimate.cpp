@@ -56,15 +56,19 @@ TEST_CASE("memory estimate: the terms add up, the busiest rank's share is fluid 
     CHECK(one.particles == doctest::Approx(8e6 * fluid + 2e6 * wall));
     CHECK(one.halo == 0);
     CHECK(one.totals == 0);
-    CHECK(one.grid == grid_bytes_per_rank(1e6, 1));
+    CHECK(one.grid == grid_bytes_per_rank(3, 1e7, 0, 3, 1e6));
+    // Empty space costs nothing; a full domain costs its cells, however many particles.
+    CHECK(grid_bytes_per_rank(3, 2.7e7, 0, 3, 1e9) == 1e6 * grid_bytes_per_rank(3, 27, 0, 3, 1e9));
+    CHECK(grid_bytes_per_rank(3, 1e9, 0, 3, 1e6) == grid_bytes_per_rank(3, 2e9, 0, 3, 1e6));
     CHECK(one.total() == one.baseline + one.particles + one.grid);
-    // 10 ranks of 1e6 particles: the busiest holds fluid only; the grid of the whole domain
-    // on every rank (today); the halo copies' state; the fluid's ids and masses on rank 0.
+    // 10 ranks of 1e6 particles: the busiest holds fluid only; the grid of its own cells and
+    // halo; the halo copies' state; the fluid's ids and masses on rank 0.
     in.ranks = 10;
     const MemoryEstimate ten = estimate_memory(in);
     CHECK(ten.fluid_per_rank == 1e6);
     CHECK(ten.particles == doctest::Approx(1e6 * fluid));
-    CHECK(ten.grid == one.grid);
+    CHECK(ten.grid == grid_bytes_per_rank(3, 1e6, ten.halo_particles, 3, 1e6));
+    CHECK(ten.grid < one.grid);
     CHECK(ten.baseline == one.baseline);
     CHECK(ten.halo == doctest::Approx(400 * halo_particles_per_rank(3, 1e6, 1e7, 3, 10)));
     CHECK(ten.totals > 0);

@@ -37,11 +37,10 @@ struct MemoryEstimate {
     [[nodiscard]] double total() const { return baseline + particles + halo + grid + totals; }
 };
 
-// The micro-cell grid's bytes on one rank: today every rank holds the dense grid of the whole
-// domain (per cell the begin/end ranges, the Morton order and key, the counting-sort offsets
-// and the census's ranges), whatever `ranks` is. The one place that changes when a rank keeps
-// only its region's cells.
-double grid_bytes_per_rank(double cells, int ranks);
+// The micro-cell grid's bytes on one rank: the cells its `owned` particles occupy (full cells
+// one support wide) and one per halo copy, at most the domain's cells.
+double grid_bytes_per_rank(int dimension, double owned, double halo, double support_over_dx,
+                           double domain_cells);
 
 // The halo copies one rank of `ranks` holds: the layer one support deep around a compact
 // region of particles_per_rank particles (a cube or square of the lattice), at most every
