@@ -16,20 +16,27 @@ constexpr int kMpiTrack = 10000; // thread id of the main (MPI) thread's track
 TraceRecorder::TraceRecorder(int rank, std::vector<std::string> stage_names, std::size_t max_events)
     : rank_(rank), stages_(std::move(stage_names)), max_events_(max_events) {}
 
-void TraceRecorder::slice(const std::string& name, int tid, double begin, double end,
-                          const std::string& args) {
+// Room for one more event (else the trace is marked truncated), and its separator written.
+bool TraceRecorder::open_event() {
     if (events_ >= max_events_) {
         truncated_ = true;
-        return;
+        return false;
     }
     if (!json_.empty())
         json_ += ",\n";
+    ++events_;
+    return true;
+}
+
+void TraceRecorder::slice(const std::string& name, int tid, double begin, double end,
+                          const std::string& args) {
+    if (!open_event())
+        return;
     // Timestamps in microseconds.
     fmt::format_to(
         std::back_inserter(json_),
         R"({{"name":"{}","ph":"X","pid":{},"tid":{},"ts":{:.3f},"dur":{:.3f},"args":{{{}}}}})",
         name, rank_, tid, begin * 1e6, std::max(0.0, end - begin) * 1e6, args);
-    ++events_;
 }
 
 void TraceRecorder::add_step(long step, const StepGraph& g,
@@ -108,19 +115,14 @@ void TraceRecorder::add_step(long step, const StepGraph& g,
 }
 
 void TraceRecorder::flow_event(const std::string& name, bool start, long id, int tid, double at) {
-    if (events_ >= max_events_) {
-        truncated_ = true;
+    if (!open_event())
         return;
-    }
-    if (!json_.empty())
-        json_ += ",\n";
     // "s" binds to the slice enclosing `at` on its thread (the pack), "f" with "bp":"e" to the
     // one enclosing it at the other end (the unpack).
     fmt::format_to(
         std::back_inserter(json_),
         R"({{"name":"{}","cat":"halo","ph":"{}","id":{},"pid":{},"tid":{},"ts":{:.3f}{}}})", name,
         start ? "s" : "f", id, rank_, tid, at * 1e6, start ? "" : R"(,"bp":"e")");
-    ++events_;
 }
 
 void TraceRecorder::add_event(const std::string& name, double begin, double end) {

@@ -36,6 +36,7 @@ public:
     [[nodiscard]] bool truncated() const { return truncated_; }
 
 private:
+    bool open_event();
     void slice(const std::string& name, int tid, double begin, double end, const std::string& args);
     void flow_event(const std::string& name, bool start, long id, int tid, double at);
     int rank_;
