@@ -26,7 +26,7 @@ UNITS = {"B": 1, "KiB": 2**10, "MiB": 2**20, "GiB": 2**30, "TiB": 2**40}
 DEFAULT_RUNS = [
     ("cases/dam_break_2d.toml", [], "2e-3"),
     ("cases/dam_break_3d.toml", [], "2e-3"),
-    ("perf/memory/sparse_tank_3d.toml", [], "2e-3"),
+    ("perf/memory/sparse_domain_3d.toml", [], "2e-3"),
     ("perf/cases/dam_break_2d_peer_200k.toml", [], "1e-4"),
     ("cases/dam_break_3d.toml", ["particles.dx=0.008"], "2e-4"),
 ]

@@ -68,7 +68,8 @@ void print_memory(const sluice::MemoryEstimate& m, const sluice::MemoryLimit& li
         fmt::print("  totals    {} (rank 0 only: every fluid particle's id and mass)\n",
                    human_bytes(m.totals));
     }
-    fmt::print("  grid      {} (the whole domain's cells on every rank)\n", human_bytes(m.grid));
+    fmt::print("  grid      {} (the cells this rank's particles and halo copies occupy)\n",
+               human_bytes(m.grid));
 }
 
 void print_info(const sluice::CaseConfig& cfg, const sluice::CaseInfo& info,
